@@ -1,0 +1,27 @@
+#pragma once
+// O(n) broad phase: a uniform cell grid over the bounding box of a point set. Finds every pair
+// of points closer than a cutoff without testing all pairs. Buffers are reused between calls,
+// so a warmed-up grid does not allocate.
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "engine/types.hpp"
+
+namespace wirepack {
+
+class CellGrid {
+ public:
+  // Appends to `pairs` (after clearing it) every (i, j) with i < j and
+  // |points[i] - points[j]| < cutoff, each pair exactly once, sorted by (i, j) so that the
+  // result is deterministic. cutoff > 0 [m].
+  void find_pairs(std::span<const Vec3> points, double cutoff,
+                  std::vector<std::pair<int, int>>& pairs);
+
+ private:
+  std::vector<int> cell_start_;   // first sorted slot of each cell (num_cells + 1)
+  std::vector<int> cell_of_;      // cell index of each point (n)
+  std::vector<int> sorted_;       // point indices sorted by cell (n)
+};
+
+}  // namespace wirepack

@@ -1,0 +1,70 @@
+#pragma once
+// Wire self-contact: capsules of radius r around the edges (segments) of the rod.
+// Broad phase: a cell grid over edge midpoints gives candidate pairs closer than
+// l_max + 2 r + skin, refined to capsule distance < 2 r + skin; the list is kept until some node
+// has moved more than skin / 2 (a Verlet list), so every step only runs the narrow phase.
+// Pairs closer than pi r in arc length along the wire (a hairpin of radius r) are excluded, so a
+// bent wire does not repel itself. Normal force: Hertz with E* = E_w / (2 (1 - nu_w^2)) and the
+// crossed-cylinders radius R* = r.
+#include <utility>
+#include <vector>
+
+#include "engine/contact/cell_grid.hpp"
+#include "engine/contact/hertz.hpp"
+#include "engine/term.hpp"
+
+namespace wirepack {
+
+struct SelfContactParams {
+  double r = 0;              // wire radius [m]
+  double E_star = 0;         // effective modulus [Pa]
+  double element_length = 0; // rest element length [m] (sets the neighbour exclusion)
+  double skin = 0;           // Verlet-list margin [m]
+  double damping_ratio = 0;  // contact dashpot zeta [-]
+  double node_mass = 0;      // [kg]
+};
+
+// One touching pair at the last accumulate: edges a < b, closest-point parameters, unit normal
+// from b to a, overlap [m] and normal force [N].
+struct WireContact {
+  int a = 0, b = 0;
+  double s = 0, t = 0;
+  Vec3 normal = Vec3::Zero();
+  double delta = 0;
+  double force = 0;
+};
+
+class SelfContactTerm : public Term {
+ public:
+  explicit SelfContactTerm(const SelfContactParams& p);
+  std::string name() const override { return "self_contact"; }
+  double accumulate(const RodState& s, RodForces& out) override;
+  double energy(const RodState& s) override;
+  double omega_max_sq(const RodInertia& inertia) const override;
+
+  int contacts() const { return static_cast<int>(contacts_.size()); }  // N of DESIGN §4
+  const std::vector<WireContact>& contact_list() const { return contacts_; }
+  int exclusion() const { return exclude_; }
+  long rebuilds() const { return rebuilds_; }
+
+ private:
+  // Number of edges that take part: those with at least one dynamic node.
+  static int active_edges(const RodState& s) { return std::min(s.n_free, s.num_edges()); }
+  void maybe_rebuild(const RodState& s);
+  void rebuild(const RodState& s);
+
+  SelfContactParams p_;
+  Hertz hertz_;
+  int exclude_;  // pairs with |a - b| <= exclude_ never interact
+  CellGrid grid_;
+  std::vector<Vec3> midpoints_;
+  std::vector<std::pair<int, int>> broad_;       // broad-phase pairs (scratch)
+  std::vector<std::pair<int, int>> candidates_;  // Verlet list
+  Vec3List x_at_build_;
+  int edges_at_build_ = -1;
+  long rebuilds_ = 0;
+  std::vector<WireContact> contacts_;
+  double max_stiffness_ = 0;
+};
+
+}  // namespace wirepack

@@ -1,0 +1,44 @@
+#pragma once
+// Contact of the wire with the inner surface of a rigid sphere of radius R (Engine I).
+// Each dynamic node is a sphere of radius r; the overlap with the wall is
+// delta = |x| + r - R. Effective radius R* = r R / (R - r) (sphere inside a concave sphere),
+// E* = E_w / (1 - nu_w^2) (rigid wall). Around the entrance hole (radius r_h, at the south pole
+// (0,0,-R)) the wall is absent; there the node touches the hole's rim circle instead, treated as
+// an edge (R* = r).
+#include "engine/contact/hertz.hpp"
+#include "engine/term.hpp"
+
+namespace wirepack {
+
+struct SphereWallParams {
+  double R = 0;              // sphere radius [m]
+  double r = 0;              // wire radius [m]
+  double hole_radius = 0;    // r_h [m]
+  double E_star = 0;         // effective modulus [Pa]
+  double damping_ratio = 0;  // contact dashpot zeta [-]
+  double node_mass = 0;      // [kg]
+};
+
+class SphereWallTerm : public Term {
+ public:
+  explicit SphereWallTerm(const SphereWallParams& p);
+  std::string name() const override { return "wall"; }
+  double accumulate(const RodState& s, RodForces& out) override;
+  double energy(const RodState& s) override;
+  double omega_max_sq(const RodInertia& inertia) const override;
+  int contacts() const { return contacts_; }  // nodes touching the wall at the last accumulate
+
+ private:
+  // Overlap and outward unit normal (from the wire towards the wall) of node x; false if none.
+  bool overlap(const Vec3& x, double& delta, Vec3& normal, bool& rim) const;
+  template <bool kForces>
+  double visit(const RodState& s, RodForces* out);
+
+  SphereWallParams p_;
+  Hertz wall_, rim_;
+  double z_rim_;               // z of the hole rim circle [m]
+  double max_stiffness_ = 0;   // largest contact stiffness at the last accumulate [N/m]
+  int contacts_ = 0;
+};
+
+}  // namespace wirepack

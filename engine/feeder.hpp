@@ -1,0 +1,45 @@
+#pragma once
+// Constant-speed injection through the hole at the south pole (paper, section "Model";
+// DESIGN §3). The wire outside the hole is a short kinematic guide on the feed axis (+z) moving
+// at speed v; a guide node is released (becomes dynamic) once it passes the plane of the hole's
+// rim, and a new guide node is added at the tail, so only the injected wire plus the guide is
+// simulated. At the start a few nodes are already inside, with a small random transverse
+// deflection drawn from the run's seed to break the rotational symmetry about the feed axis.
+#include <cstdint>
+
+#include "engine/rod/rod_state.hpp"
+
+namespace wirepack {
+
+struct FeederParams {
+  double R = 0;               // sphere radius [m]
+  double r = 0;               // wire radius [m]
+  double hole_radius = 0;     // [m]
+  double element_length = 0;  // rest length of new elements [m]
+  double speed = 0;           // injection speed v [m/s]
+  int guide_nodes = 3;        // kinematic nodes kept outside the hole
+  double deflection = 0;      // rms transverse deflection of the initial inside nodes [m]
+  std::uint64_t seed = 1;
+  bool twist = false;         // create twist DOFs
+};
+
+class Feeder {
+ public:
+  explicit Feeder(const FeederParams& p);
+  // Builds the initial rod: free nodes inside, guide outside, all moving at v along +z.
+  RodState initial_state() const;
+  // Injected length at time t: L0 + v t [m].
+  double injected_length(double t) const { return L0_ + p_.speed * t; }
+  double z_hole() const { return z_hole_; }
+  // Releases guide nodes that passed the hole plane and appends new tail nodes. Returns the
+  // number of nodes released (0 if the DOF layout did not change).
+  int release(RodState& s) const;
+
+ private:
+  FeederParams p_;
+  double z_hole_;  // z of the rim plane [m]
+  double L0_;      // injected length at t = 0 [m]
+  int n_inside0_;  // free nodes at t = 0
+};
+
+}  // namespace wirepack

@@ -1,0 +1,34 @@
+#include "engine/integrate/damping.hpp"
+
+namespace wirepack {
+
+void RodDamping::add_forces(const RodState& s, RodForces& out) const {
+  const int n = s.num_nodes();
+  const int nf = s.n_free;
+  if (n < 2) return;
+  // Edge tangents are needed for both the axial and the transverse parts.
+  Vec3 t_prev = Vec3::Zero();
+  for (int j = 0; j < n - 1 && j < nf; ++j) {
+    const Vec3 e = s.x[j + 1] - s.x[j];
+    const Vec3 t = e.normalized();
+    // Axial dashpot on edge j (acts on the dynamic nodes only; the guide is kinematic).
+    const double rate = (s.v[j + 1] - s.v[j]).dot(t);
+    const Vec3 fa = (p_.eta_axial * rate) * t;
+    out.f[j] += fa;
+    out.f[j + 1] -= fa;
+    // Transverse damping of node j about its tangent tau_j.
+    const Vec3 tau = j == 0 ? t : (t_prev + t).normalized();
+    const Vec3& v = s.v[j];
+    const double m_gamma = p_.c_transverse;
+    out.f[j] -= m_gamma * (v - v.dot(tau) * tau);
+    t_prev = t;
+  }
+  if (!s.has_twist()) return;
+  for (int i = 1; i < n - 1; ++i) {
+    const double rel = s.omega[i] - s.omega[i - 1];
+    out.torque[i] -= p_.eta_twist * rel;
+    out.torque[i - 1] += p_.eta_twist * rel;
+  }
+}
+
+}  // namespace wirepack

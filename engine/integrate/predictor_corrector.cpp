@@ -1,0 +1,103 @@
+#include "engine/integrate/predictor_corrector.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace wirepack {
+
+double PredictorCorrector::stable_step(double omega2) const {
+  if (!(omega2 > 0)) return std::numeric_limits<double>::infinity();
+  const double z = c_.damping_ratio;
+  return c_.safety * 2.0 / std::sqrt(omega2) * (std::sqrt(1.0 + z * z) - z);
+}
+
+void PredictorCorrector::initialise(RodState& s, const EvaluateFn& eval,
+                                    const PositionsChangedFn& moved) {
+  moved(s);
+  const double omega2 = eval(s, a_, alpha_);
+  dt_stable_ = stable_step(omega2);
+  if (dt_ <= 0) dt_ = 0.1 * dt_stable_;  // start cautiously; the controller grows it
+  dt_ = std::min(dt_, dt_stable_);
+}
+
+double PredictorCorrector::step(RodState& s, const EvaluateFn& eval,
+                                const PositionsChangedFn& moved) {
+  const int n = s.num_nodes();
+  const int ne = static_cast<int>(s.theta.size());
+  x0_.assign(s.x.begin(), s.x.end());
+  v0_.assign(s.v.begin(), s.v.end());
+  th0_.assign(s.theta.begin(), s.theta.end());
+  om0_.assign(s.omega.begin(), s.omega.end());
+  if (s.has_twist()) {
+    saved_frames_.ref1 = s.ref1;
+    saved_frames_.ref_tangent = s.ref_tangent;
+    saved_frames_.ref_twist = s.ref_twist;
+  }
+  for (;;) {
+    const double dt = dt_;
+    const double h2 = 0.5 * dt * dt;
+    // Predictor (the guide has a = 0 and moves at its constant velocity).
+    for (int i = 0; i < n; ++i) {
+      s.x[i] = x0_[i] + dt * v0_[i] + h2 * a_[i];
+      s.v[i] = v0_[i] + dt * a_[i];
+    }
+    for (int j = 0; j < ne; ++j) {
+      s.theta[j] = th0_[j] + dt * om0_[j] + h2 * alpha_[j];
+      s.omega[j] = om0_[j] + dt * alpha_[j];
+    }
+    moved(s);
+    const double omega2 = eval(s, a_new_, alpha_new_);
+    // Corrector error estimate: dt^2/6 |a' - a| (positions), r dt^2/6 |alpha' - alpha| (twist).
+    double da = 0.0;
+    bool finite = true;
+    for (int i = 0; i < s.n_free; ++i) {
+      const double d = (a_new_[i] - a_[i]).squaredNorm();
+      finite = finite && std::isfinite(d);
+      da = std::max(da, d);
+    }
+    da = std::sqrt(da);
+    for (int j = 0; j < ne; ++j) {
+      const double d = r_ * std::abs(alpha_new_[j] - alpha_[j]);
+      finite = finite && std::isfinite(d);
+      da = std::max(da, d);
+    }
+    const double err = dt * dt / 6.0 * da;
+    dt_stable_ = stable_step(omega2);
+    const double ratio = err > 0 ? c_.tolerance / err : 1e30;
+    double factor = c_.safety * std::cbrt(ratio);
+    if (!finite) factor = c_.min_shrink;
+    const bool reject = !finite || err > 2.0 * c_.tolerance || dt > 1.5 * dt_stable_;
+    if (reject) {
+      ++rejected_;
+      dt_ = std::min(dt * std::max(c_.min_shrink, std::min(factor, 0.9)), dt_stable_);
+      if (!(dt_ > c_.dt_floor)) {
+        throw SimulationError(finite ? "time step collapsed below " + std::to_string(c_.dt_floor) +
+                                           " s"
+                                     : "non-finite forces (NaN/Inf)");
+      }
+      // Restore and retry.
+      std::copy(x0_.begin(), x0_.end(), s.x.begin());
+      std::copy(v0_.begin(), v0_.end(), s.v.begin());
+      std::copy(th0_.begin(), th0_.end(), s.theta.begin());
+      std::copy(om0_.begin(), om0_.end(), s.omega.begin());
+      if (s.has_twist()) {
+        s.ref1 = saved_frames_.ref1;
+        s.ref_tangent = saved_frames_.ref_tangent;
+        s.ref_twist = saved_frames_.ref_twist;
+      }
+      continue;
+    }
+    // Corrector on velocities.
+    for (int i = 0; i < n; ++i) s.v[i] = v0_[i] + 0.5 * dt * (a_[i] + a_new_[i]);
+    for (int j = 0; j < ne; ++j) s.omega[j] = om0_[j] + 0.5 * dt * (alpha_[j] + alpha_new_[j]);
+    std::swap(a_, a_new_);
+    std::swap(alpha_, alpha_new_);
+    factor = std::clamp(factor, c_.min_shrink, c_.max_growth);
+    dt_ = std::min(dt * factor, dt_stable_);
+    return dt;
+  }
+}
+
+}  // namespace wirepack

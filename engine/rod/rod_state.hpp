@@ -1,0 +1,41 @@
+#pragma once
+// Mutable state of one discrete elastic rod (Bergou et al. 2008/2010 style).
+// Nodes are stored tip first: node 0 is the free tip, the highest indices are the kinematic
+// guide outside the hole. Edge j joins nodes j and j+1.
+#include <vector>
+
+#include "engine/types.hpp"
+
+namespace wirepack {
+
+struct RodState {
+  Vec3List x;                       // node positions (n) [m]
+  Vec3List v;                       // node velocities (n) [m/s]
+  std::vector<double> rest_length;  // edge rest lengths (n-1) [m]
+  int n_free = 0;                   // nodes [0, n_free) are dynamic, the rest are the guide
+
+  // Twist degrees of freedom (empty when the scene has no twist effect).
+  std::vector<double> theta;        // material angle of edge j about its reference frame (n-1) [rad]
+  std::vector<double> omega;        // d theta / dt (n-1) [rad/s]
+  Vec3List ref1;                    // reference director of edge j, unit, normal to the edge (n-1)
+  Vec3List ref_tangent;             // unit tangent at which ref1 was last transported (n-1)
+  std::vector<double> ref_twist;    // reference twist at node i (n; 0 at the two ends) [rad]
+
+  int num_nodes() const { return static_cast<int>(x.size()); }
+  int num_edges() const { return static_cast<int>(x.size()) - 1; }
+  bool has_twist() const { return !theta.empty(); }
+  // Edge j is dynamic (its theta integrates) iff both its nodes are dynamic.
+  bool edge_free(int j) const { return j + 1 < n_free; }
+};
+
+// Generalised forces on the rod: -dU/dx per node (n) [N] and -dU/dtheta per edge (n-1) [N m].
+struct RodForces {
+  Vec3List f;
+  std::vector<double> torque;
+  void reset(const RodState& s) {
+    f.assign(s.x.size(), Vec3::Zero());
+    torque.assign(s.theta.size(), 0.0);
+  }
+};
+
+}  // namespace wirepack

@@ -1,0 +1,27 @@
+#pragma once
+// Twisting energy of the discrete rod (Bergou et al. 2010):
+//   U_t = sum_i G J m_i^2 / (2 lbar_i),   m_i = theta_i - theta_{i-1} + ref_twist_i,
+// the discrete form of 1/2 int G J k_3^2 ds (paper Eq. (1)). The position gradient uses
+// d ref_twist_i / d e^{i-1} = kb_i / (2 |e^{i-1}|), d ref_twist_i / d e^i = kb_i / (2 |e^i|)
+// with the curvature binormal kb_i = 2 t_{i-1} x t_i / (1 + t_{i-1} . t_i). accumulate()
+// expects reference frames updated to the current positions (update_reference_frames).
+#include "engine/term.hpp"
+
+namespace wirepack {
+
+class TwistTerm : public Term {
+ public:
+  explicit TwistTerm(double GJ) : GJ_(GJ) {}
+  std::string name() const override { return "twist"; }
+  double accumulate(const RodState& s, RodForces& out) override;
+  // Transports the reference frames of a copy of `s` to its positions first, so the energy is
+  // a function of (x, theta) given the stored frames: this is what finite differences see.
+  double energy(const RodState& s) override;
+  double omega_max_sq(const RodInertia& inertia) const override;
+
+ private:
+  double GJ_;              // torsional stiffness [N m^2]
+  double min_rest_ = 0.0;  // shortest rest length at the last accumulate [m]
+};
+
+}  // namespace wirepack

@@ -1,0 +1,43 @@
+#pragma once
+// Validated parameters -> the set of effects this scene needs (DESIGN §3, effects on demand).
+// A rigid shell builds no mesh; mu_s = 0 builds no friction; twist DOFs exist only when the
+// scene's twist mode asks for them. The cost of an effect that is off is zero because it is
+// simply not in the list.
+#include <memory>
+#include <vector>
+
+#include "engine/contact/self_contact.hpp"
+#include "engine/contact/sphere_wall.hpp"
+#include "engine/feeder.hpp"
+#include "engine/integrate/damping.hpp"
+#include "engine/integrate/predictor_corrector.hpp"
+#include "engine/params.hpp"
+#include "engine/rod/material.hpp"
+#include "engine/term.hpp"
+
+namespace wirepack {
+
+// Numerical constants of ours (documented in the README).
+struct SceneConstants {
+  static constexpr double kHoleClearance = 0.1;    // hole radius r_h = (1 + 0.1) r
+  static constexpr double kDeflection = 0.05;      // initial rms deflection of the tip / r
+  static constexpr double kSkin = 0.5;             // Verlet skin of the self-contact list / r
+  static constexpr double kDtFloorFraction = 1e-6; // step collapse below this x initial stable dt
+};
+
+struct Assembly {
+  RodMaterial material;
+  double density_scaled = 0;  // rho_eff = E_w q^2 / v^2 (mass scaling) [kg/m^3]
+  RodInertia inertia;
+  DampingParams damping;
+  FeederParams feeder;
+  StepControl control;
+  std::vector<std::unique_ptr<Term>> terms;
+  SphereWallTerm* wall = nullptr;         // owned by `terms`
+  SelfContactTerm* self_contact = nullptr;
+};
+
+// Throws std::invalid_argument for scenes this engine cannot simulate.
+Assembly assemble(const SceneParams& p);
+
+}  // namespace wirepack

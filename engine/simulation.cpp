@@ -1,0 +1,155 @@
+#include "engine/simulation.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "engine/rod/frames.hpp"
+#include "engine/scene.hpp"
+
+namespace wirepack {
+
+struct Simulation::Impl {
+  SceneParams params;
+  Assembly assembly;
+  Feeder feeder;
+  RodDamping damping;
+  PredictorCorrector integrator;
+  RodState state;
+  RodForces forces;
+  std::vector<double> term_energy;  // per term, at the last evaluation [J]
+  double time = 0.0;
+  long steps = 0;
+
+  explicit Impl(const SceneParams& p)
+      : params(p),
+        assembly(assemble(p)),
+        feeder(assembly.feeder),
+        damping(assembly.damping),
+        integrator(assembly.control, p.wire.radius),
+        state(feeder.initial_state()),
+        term_energy(assembly.terms.size(), 0.0) {
+    integrator.initialise(state, eval_fn(), moved_fn());
+    // A step far below the initial stability limit means the run has collapsed.
+    StepControl c = assembly.control;
+    c.dt_floor = SceneConstants::kDtFloorFraction * integrator.dt_stable();
+    PredictorCorrector fresh(c, p.wire.radius);
+    integrator = fresh;
+    integrator.initialise(state, eval_fn(), moved_fn());
+  }
+
+  // Generalised accelerations of the dynamic DOFs; returns omega_max^2 [1/s^2].
+  double evaluate(RodState& s, Vec3List& a, std::vector<double>& alpha) {
+    forces.reset(s);
+    double omega2 = 0.0;
+    for (size_t k = 0; k < assembly.terms.size(); ++k) {
+      term_energy[k] = assembly.terms[k]->accumulate(s, forces);
+      omega2 += assembly.terms[k]->omega_max_sq(assembly.inertia);
+    }
+    damping.add_forces(s, forces);
+    const int n = s.num_nodes();
+    a.resize(n);
+    const double inv_m = 1.0 / assembly.inertia.node_mass;
+    for (int i = 0; i < n; ++i) a[i] = i < s.n_free ? Vec3(inv_m * forces.f[i]) : Vec3::Zero();
+    alpha.assign(s.theta.size(), 0.0);
+    if (s.has_twist()) {
+      const double inv_i = 1.0 / assembly.inertia.edge_twist_inertia;
+      for (size_t j = 0; j < s.theta.size(); ++j) {
+        if (s.edge_free(static_cast<int>(j))) alpha[j] = inv_i * forces.torque[j];
+      }
+    }
+    return omega2;
+  }
+
+  EvaluateFn eval_fn() {
+    return [this](RodState& s, Vec3List& a, std::vector<double>& al) { return evaluate(s, a, al); };
+  }
+  static PositionsChangedFn moved_fn() {
+    return [](RodState& s) { update_reference_frames(s); };
+  }
+
+  void check_state() const {
+    const double R = params.R();
+    const double r = params.wire.radius;
+    for (int i = 0; i < state.n_free; ++i) {
+      const Vec3& x = state.x[i];
+      if (!x.allFinite() || !state.v[i].allFinite()) {
+        throw SimulationError("non-finite state (NaN/Inf) at node " + std::to_string(i));
+      }
+      // A node centre a whole radius beyond the wall has passed through it.
+      if (x.norm() > R + r && x[2] > feeder.z_hole()) {
+        throw SimulationError("wire node " + std::to_string(i) + " tunnelled through the wall");
+      }
+    }
+  }
+
+  void step() {
+    const double dt = integrator.step(state, eval_fn(), moved_fn());
+    time += dt;
+    ++steps;
+    check_state();
+    if (feeder.release(state) > 0) integrator.initialise(state, eval_fn(), moved_fn());
+  }
+
+  double energy_of(const char* name) const {
+    double U = 0.0;
+    for (size_t k = 0; k < assembly.terms.size(); ++k) {
+      if (assembly.terms[k]->name() == name) U += term_energy[k];
+    }
+    return U;
+  }
+};
+
+Simulation::Simulation(const SceneParams& params) : impl_(std::make_unique<Impl>(params)) {}
+Simulation::~Simulation() = default;
+
+void Simulation::step() { impl_->step(); }
+
+void Simulation::advance_to(double l_target) {
+  while (l() < l_target) impl_->step();
+}
+
+const SceneParams& Simulation::params() const { return impl_->params; }
+double Simulation::L() const { return impl_->feeder.injected_length(impl_->time); }
+double Simulation::l() const { return L() / impl_->params.R(); }
+double Simulation::time() const { return impl_->time; }
+double Simulation::dt() const { return impl_->integrator.dt(); }
+long Simulation::steps() const { return impl_->steps; }
+long Simulation::rejected_steps() const { return impl_->integrator.rejected(); }
+
+std::span<const Vec3> Simulation::inside_nodes() const {
+  return {impl_->state.x.data(), static_cast<size_t>(impl_->state.n_free)};
+}
+std::span<const Vec3> Simulation::all_nodes() const { return impl_->state.x; }
+
+Energies Simulation::energies() const {
+  Energies e;
+  e.U_b = impl_->energy_of("bend");
+  e.U_t = impl_->energy_of("twist");
+  e.U_s = impl_->energy_of("stretch");
+  e.U_contact = impl_->energy_of("wall") + impl_->energy_of("self_contact");
+  const RodState& s = impl_->state;
+  double k = 0.0;
+  for (int i = 0; i < s.n_free; ++i) k += s.v[i].squaredNorm();
+  e.E_kin = 0.5 * impl_->assembly.inertia.node_mass * k;
+  double kt = 0.0;
+  for (size_t j = 0; j < s.omega.size(); ++j) {
+    if (s.edge_free(static_cast<int>(j))) kt += s.omega[j] * s.omega[j];
+  }
+  e.E_kin += 0.5 * impl_->assembly.inertia.edge_twist_inertia * kt;
+  return e;
+}
+
+int Simulation::wire_contacts() const {
+  return impl_->assembly.self_contact ? impl_->assembly.self_contact->contacts() : 0;
+}
+
+std::vector<std::string> Simulation::term_names() const {
+  std::vector<std::string> names;
+  for (const auto& t : impl_->assembly.terms) names.push_back(t->name());
+  return names;
+}
+
+std::span<const Vec3> Simulation::shell_vertices() const { return {}; }
+std::span<const std::array<int, 3>> Simulation::shell_triangles() const { return {}; }
+
+}  // namespace wirepack

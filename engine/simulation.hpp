@@ -1,0 +1,61 @@
+#pragma once
+// One scene -> one trajectory: the wire injected through the hole at the south pole of a
+// sphere of radius R = rho r. Physics only: no files, no threads.
+#include <array>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "engine/params.hpp"
+#include "engine/types.hpp"
+
+namespace wirepack {
+
+struct Energies {
+  double U_b = 0, U_t = 0, U_s = 0;  // wire bending, twist, stretch [J]
+  double U_m = 0, U_sb = 0;          // shell membrane, shell bending [J]
+  double U_contact = 0;              // stored elastic energy in contacts [J]
+  double E_kin = 0;                  // kinetic energy (scaled masses) [J]
+};
+
+class Simulation {
+ public:
+  explicit Simulation(const SceneParams& params);
+  ~Simulation();
+  Simulation(const Simulation&) = delete;
+  Simulation& operator=(const Simulation&) = delete;
+
+  // Advances by one accepted adaptive step. Throws SimulationError (NaN, step collapse,
+  // tunnelling through the wall) with the reason.
+  void step();
+  // Steps until l() >= l_target.
+  void advance_to(double l_target);
+  bool finished() const { return l() >= params().l_max; }
+
+  const SceneParams& params() const;
+  double l() const;        // injected length / R
+  double L() const;        // injected length [m]
+  double time() const;     // simulated time [s]
+  double dt() const;       // current time step [s]
+  long steps() const;      // accepted steps
+  long rejected_steps() const;
+
+  // Wire centerline inside the cavity (the released nodes), tip first [m].
+  std::span<const Vec3> inside_nodes() const;
+  // Every simulated node, including the kinematic guide outside the hole [m].
+  std::span<const Vec3> all_nodes() const;
+  Energies energies() const;   // at the last evaluated state
+  int wire_contacts() const;   // N: wire element pairs in contact
+  // Names of the terms assembled for this scene, e.g. {"stretch", "bend", "wall", ...}.
+  std::vector<std::string> term_names() const;
+  // Shell mesh (empty for a rigid shell).
+  std::span<const Vec3> shell_vertices() const;
+  std::span<const std::array<int, 3>> shell_triangles() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace wirepack
