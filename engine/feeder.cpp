@@ -9,7 +9,9 @@
 namespace wirepack {
 
 Feeder::Feeder(const FeederParams& p)
-    : p_(p), z_hole_(-std::sqrt(p.R * p.R - p.hole_radius * p.hole_radius)) {
+    : p_(p),
+      z_hole_(-std::sqrt(p.R * p.R - p.hole_radius * p.hole_radius)),
+      rng_(p.seed ^ 0x9e3779b97f4a7c15ULL) {
   // About two wire diameters of wire inside at the start (at least two elements).
   n_inside0_ = std::max(3, static_cast<int>(std::ceil(4.0 * p.r / p.element_length)) + 1);
   L0_ = (n_inside0_ - 0.5) * p.element_length;
@@ -44,9 +46,12 @@ RodState Feeder::initial_state() const {
   return s;
 }
 
-int Feeder::release(RodState& s) const {
+int Feeder::release(RodState& s) {
   int released = 0;
+  std::normal_distribution<double> gauss(0.0, 1.0);
   while (s.n_free < s.num_nodes() && s.x[s.n_free][2] > z_hole_) {
+    s.x[s.n_free][0] += p_.release_noise * gauss(rng_);
+    s.x[s.n_free][1] += p_.release_noise * gauss(rng_);
     ++s.n_free;
     ++released;
     // Keep the guide length: append a node one element behind the tail, on the feed axis.

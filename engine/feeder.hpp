@@ -5,7 +5,12 @@
 // rim, and a new guide node is added at the tail, so only the injected wire plus the guide is
 // simulated. At the start a few nodes are already inside, with a small random transverse
 // deflection drawn from the run's seed to break the rotational symmetry about the feed axis.
+// A perfectly straight wire would keep that symmetry once the initial deflection has relaxed
+// and, pushed head-on into the wall, overshoot its Euler load by an order of magnitude before
+// round-off lets it buckle; so every released node also gets a tiny random transverse offset
+// (imperfection, `release_noise`), drawn from the same seeded stream.
 #include <cstdint>
+#include <random>
 
 #include "engine/rod/rod_state.hpp"
 
@@ -19,8 +24,9 @@ struct FeederParams {
   double speed = 0;           // injection speed v [m/s]
   int guide_nodes = 3;        // kinematic nodes kept outside the hole
   double deflection = 0;      // rms transverse deflection of the initial inside nodes [m]
+  double release_noise = 0;   // rms transverse offset given to each released node [m]
   std::uint64_t seed = 1;
-  bool twist = false;         // create twist DOFs
+  bool twist = false;  // create twist DOFs
 };
 
 class Feeder {
@@ -33,13 +39,14 @@ class Feeder {
   double z_hole() const { return z_hole_; }
   // Releases guide nodes that passed the hole plane and appends new tail nodes. Returns the
   // number of nodes released (0 if the DOF layout did not change).
-  int release(RodState& s) const;
+  int release(RodState& s);
 
  private:
   FeederParams p_;
-  double z_hole_;  // z of the rim plane [m]
-  double L0_;      // injected length at t = 0 [m]
-  int n_inside0_;  // free nodes at t = 0
+  double z_hole_;        // z of the rim plane [m]
+  double L0_;            // injected length at t = 0 [m]
+  int n_inside0_;        // free nodes at t = 0
+  std::mt19937_64 rng_;  // imperfections of released nodes (seeded; run-local)
 };
 
 }  // namespace wirepack

@@ -11,29 +11,29 @@ enum class ShellKind { Rigid, Elastic };
 enum class TwistMode { Auto, On, Off };
 
 struct WireParams {
-  double radius = 0.5e-3;               // r [m]
-  double youngs_modulus = 1e9;          // E_w [Pa]
-  double poisson_ratio = 1.0 / 3.0;     // nu_w [-]
-  double density = 1140.0;              // physical density [kg/m^3] (polyamide)
+  double radius = 0.5e-3;            // r [m]
+  double youngs_modulus = 1e9;       // E_w [Pa]
+  double poisson_ratio = 1.0 / 3.0;  // nu_w [-]
+  double density = 1140.0;           // physical density [kg/m^3] (polyamide)
 };
 
 struct NumericsParams {
-  double element_length = 0.5e-3;      // rest length of a wire element [m]
-  double shell_mesh_size = 1.0e-3;      // target shell triangle edge [m] (elastic shell only)
-  double quasistatic_ratio = 0.01;      // v / c_axial; sets the mass scaling [-]
-  double tolerance = 1e-4;              // local position error per step, in units of r [-]
-  double damping_ratio = 0.5;           // subcritical damping ratio zeta [-]
+  double element_length = 0.5e-3;   // rest length of a wire element [m]
+  double shell_mesh_size = 1.0e-3;  // target shell triangle edge [m] (elastic shell only)
+  double quasistatic_ratio = 0.01;  // v / c_axial; sets the mass scaling [-]
+  double tolerance = 1e-4;          // local position error per step, in units of r [-]
+  double damping_ratio = 0.5;       // subcritical damping ratio zeta [-]
   TwistMode twist = TwistMode::Auto;
 };
 
 struct SceneParams {
-  double rho = 20.0;           // R / r
-  double xi = 10.0;            // R / t
-  double eps = 1000.0;         // E_w / E_s
-  double mu_s = 0.0;           // static friction coefficient
-  double mu_d = 0.0;           // dynamic friction coefficient (0.9 mu_s unless set)
-  double l_max = 50.0;         // final injected length / R
-  std::uint64_t seed = 1;      // seeds the initial transverse perturbation
+  double rho = 20.0;       // R / r
+  double xi = 10.0;        // R / t
+  double eps = 1000.0;     // E_w / E_s
+  double mu_s = 0.0;       // static friction coefficient
+  double mu_d = 0.0;       // dynamic friction coefficient (0.9 mu_s unless set)
+  double l_max = 50.0;     // final injected length / R
+  std::uint64_t seed = 1;  // seeds the initial transverse perturbation
   ShellKind shell = ShellKind::Elastic;
   double injection_speed = 0.5;  // v [m/s]
   WireParams wire;

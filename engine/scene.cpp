@@ -43,6 +43,7 @@ Assembly assemble(const SceneParams& p) {
   a.feeder.element_length = ell;
   a.feeder.speed = v;
   a.feeder.deflection = SceneConstants::kDeflection * r;
+  a.feeder.release_noise = SceneConstants::kReleaseNoise * r;
   a.feeder.seed = p.seed;
   a.feeder.twist = twist;
 

@@ -19,10 +19,11 @@ namespace wirepack {
 
 // Numerical constants of ours (documented in the README).
 struct SceneConstants {
-  static constexpr double kHoleClearance = 0.1;    // hole radius r_h = (1 + 0.1) r
-  static constexpr double kDeflection = 0.05;      // initial rms deflection of the tip / r
-  static constexpr double kSkin = 0.5;             // Verlet skin of the self-contact list / r
-  static constexpr double kDtFloorFraction = 1e-6; // step collapse below this x initial stable dt
+  static constexpr double kHoleClearance = 0.1;     // hole radius r_h = (1 + 0.1) r
+  static constexpr double kDeflection = 0.05;       // initial rms deflection of the tip / r
+  static constexpr double kReleaseNoise = 1e-3;     // rms offset of each released node / r
+  static constexpr double kSkin = 0.5;              // Verlet skin of the self-contact list / r
+  static constexpr double kDtFloorFraction = 1e-6;  // step collapse below this x initial stable dt
 };
 
 struct Assembly {
@@ -33,7 +34,7 @@ struct Assembly {
   FeederParams feeder;
   StepControl control;
   std::vector<std::unique_ptr<Term>> terms;
-  SphereWallTerm* wall = nullptr;         // owned by `terms`
+  SphereWallTerm* wall = nullptr;  // owned by `terms`
   SelfContactTerm* self_contact = nullptr;
 };
 

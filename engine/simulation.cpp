@@ -102,24 +102,42 @@ struct Simulation::Impl {
 Simulation::Simulation(const SceneParams& params) : impl_(std::make_unique<Impl>(params)) {}
 Simulation::~Simulation() = default;
 
-void Simulation::step() { impl_->step(); }
+void Simulation::step() {
+  impl_->step();
+}
 
 void Simulation::advance_to(double l_target) {
   while (l() < l_target) impl_->step();
 }
 
-const SceneParams& Simulation::params() const { return impl_->params; }
-double Simulation::L() const { return impl_->feeder.injected_length(impl_->time); }
-double Simulation::l() const { return L() / impl_->params.R(); }
-double Simulation::time() const { return impl_->time; }
-double Simulation::dt() const { return impl_->integrator.dt(); }
-long Simulation::steps() const { return impl_->steps; }
-long Simulation::rejected_steps() const { return impl_->integrator.rejected(); }
+const SceneParams& Simulation::params() const {
+  return impl_->params;
+}
+double Simulation::L() const {
+  return impl_->feeder.injected_length(impl_->time);
+}
+double Simulation::l() const {
+  return L() / impl_->params.R();
+}
+double Simulation::time() const {
+  return impl_->time;
+}
+double Simulation::dt() const {
+  return impl_->integrator.dt();
+}
+long Simulation::steps() const {
+  return impl_->steps;
+}
+long Simulation::rejected_steps() const {
+  return impl_->integrator.rejected();
+}
 
 std::span<const Vec3> Simulation::inside_nodes() const {
   return {impl_->state.x.data(), static_cast<size_t>(impl_->state.n_free)};
 }
-std::span<const Vec3> Simulation::all_nodes() const { return impl_->state.x; }
+std::span<const Vec3> Simulation::all_nodes() const {
+  return impl_->state.x;
+}
 
 Energies Simulation::energies() const {
   Energies e;
@@ -149,7 +167,11 @@ std::vector<std::string> Simulation::term_names() const {
   return names;
 }
 
-std::span<const Vec3> Simulation::shell_vertices() const { return {}; }
-std::span<const std::array<int, 3>> Simulation::shell_triangles() const { return {}; }
+std::span<const Vec3> Simulation::shell_vertices() const {
+  return {};
+}
+std::span<const std::array<int, 3>> Simulation::shell_triangles() const {
+  return {};
+}
 
 }  // namespace wirepack

@@ -34,19 +34,19 @@ class Simulation {
   bool finished() const { return l() >= params().l_max; }
 
   const SceneParams& params() const;
-  double l() const;        // injected length / R
-  double L() const;        // injected length [m]
-  double time() const;     // simulated time [s]
-  double dt() const;       // current time step [s]
-  long steps() const;      // accepted steps
+  double l() const;     // injected length / R
+  double L() const;     // injected length [m]
+  double time() const;  // simulated time [s]
+  double dt() const;    // current time step [s]
+  long steps() const;   // accepted steps
   long rejected_steps() const;
 
   // Wire centerline inside the cavity (the released nodes), tip first [m].
   std::span<const Vec3> inside_nodes() const;
   // Every simulated node, including the kinematic guide outside the hole [m].
   std::span<const Vec3> all_nodes() const;
-  Energies energies() const;   // at the last evaluated state
-  int wire_contacts() const;   // N: wire element pairs in contact
+  Energies energies() const;  // at the last evaluated state
+  int wire_contacts() const;  // N: wire element pairs in contact
   // Names of the terms assembled for this scene, e.g. {"stretch", "bend", "wall", ...}.
   std::vector<std::string> term_names() const;
   // Shell mesh (empty for a rigid shell).

@@ -19,9 +19,9 @@ class CellGrid {
                   std::vector<std::pair<int, int>>& pairs);
 
  private:
-  std::vector<int> cell_start_;   // first sorted slot of each cell (num_cells + 1)
-  std::vector<int> cell_of_;      // cell index of each point (n)
-  std::vector<int> sorted_;       // point indices sorted by cell (n)
+  std::vector<int> cell_start_;  // first sorted slot of each cell (num_cells + 1)
+  std::vector<int> cell_of_;     // cell index of each point (n)
+  std::vector<int> sorted_;      // point indices sorted by cell (n)
 };
 
 }  // namespace wirepack

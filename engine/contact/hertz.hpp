@@ -19,16 +19,16 @@ struct Hertz {
   static Hertz from(double E_star, double R_star) {
     return Hertz{4.0 / 3.0 * E_star * std::sqrt(R_star)};
   }
-  double force(double delta) const { return k * delta * std::sqrt(delta); }              // [N]
-  double energy(double delta) const { return 0.4 * k * delta * delta * std::sqrt(delta); } // [J]
-  double stiffness(double delta) const { return 1.5 * k * std::sqrt(delta); }             // [N/m]
+  double force(double delta) const { return k * delta * std::sqrt(delta); }                 // [N]
+  double energy(double delta) const { return 0.4 * k * delta * delta * std::sqrt(delta); }  // [J]
+  double stiffness(double delta) const { return 1.5 * k * std::sqrt(delta); }               // [N/m]
 };
 
 // Normal force including a dashpot on the approach speed (positive when closing, m/s), with
 // damping coefficient 2 zeta sqrt(k_c m_eff) at the current contact stiffness k_c. The total is
 // never attractive. Returns the force magnitude [N].
-inline double damped_normal_force(const Hertz& h, double delta, double approach_speed,
-                                  double zeta, double m_eff) {
+inline double damped_normal_force(const Hertz& h, double delta, double approach_speed, double zeta,
+                                  double m_eff) {
   const double f = h.force(delta);
   if (zeta <= 0.0 || approach_speed == 0.0) return f;
   const double eta = 2.0 * zeta * std::sqrt(h.stiffness(delta) * m_eff);

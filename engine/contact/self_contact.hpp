@@ -16,12 +16,12 @@
 namespace wirepack {
 
 struct SelfContactParams {
-  double r = 0;              // wire radius [m]
-  double E_star = 0;         // effective modulus [Pa]
-  double element_length = 0; // rest element length [m] (sets the neighbour exclusion)
-  double skin = 0;           // Verlet-list margin [m]
-  double damping_ratio = 0;  // contact dashpot zeta [-]
-  double node_mass = 0;      // [kg]
+  double r = 0;               // wire radius [m]
+  double E_star = 0;          // effective modulus [Pa]
+  double element_length = 0;  // rest element length [m] (sets the neighbour exclusion)
+  double skin = 0;            // Verlet-list margin [m]
+  double damping_ratio = 0;   // contact dashpot zeta [-]
+  double node_mass = 0;       // [kg]
 };
 
 // One touching pair at the last accumulate: edges a < b, closest-point parameters, unit normal

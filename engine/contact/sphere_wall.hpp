@@ -36,8 +36,8 @@ class SphereWallTerm : public Term {
 
   SphereWallParams p_;
   Hertz wall_, rim_;
-  double z_rim_;               // z of the hole rim circle [m]
-  double max_stiffness_ = 0;   // largest contact stiffness at the last accumulate [N/m]
+  double z_rim_;              // z of the hole rim circle [m]
+  double max_stiffness_ = 0;  // largest contact stiffness at the last accumulate [N/m]
   int contacts_ = 0;
 };
 

@@ -13,9 +13,9 @@
 namespace wirepack {
 
 struct DampingParams {
-  double c_transverse = 0;      // gamma m per node [N s/m]
-  double eta_axial = 0;         // [N s/m]
-  double eta_twist = 0;         // [N m s]
+  double c_transverse = 0;  // gamma m per node [N s/m]
+  double eta_axial = 0;     // [N s/m]
+  double eta_twist = 0;     // [N m s]
 };
 
 class RodDamping {

@@ -94,8 +94,15 @@ double PredictorCorrector::step(RodState& s, const EvaluateFn& eval,
     for (int j = 0; j < ne; ++j) s.omega[j] = om0_[j] + 0.5 * dt * (alpha_[j] + alpha_new_[j]);
     std::swap(a_, a_new_);
     std::swap(alpha_, alpha_new_);
-    factor = std::clamp(factor, c_.min_shrink, c_.max_growth);
-    dt_ = std::min(dt * factor, dt_stable_);
+    // Hysteresis: keep the step unless the error asks for a clear change. A step that follows
+    // the error estimate every step correlates with the oscillation phase and makes the
+    // (otherwise time-reversible) scheme drift in energy.
+    if (factor < 1.0) {
+      dt_ = dt * std::max(factor, c_.min_shrink);
+    } else if (factor > 2.0) {
+      dt_ = dt * std::min(factor, c_.max_growth);
+    }
+    dt_ = std::min(dt_, dt_stable_);
     return dt;
   }
 }

@@ -7,12 +7,12 @@
 namespace wirepack {
 
 struct RodMaterial {
-  double E = 0;   // Young's modulus [Pa]
-  double G = 0;   // shear modulus E / (2 (1 + nu)) [Pa]
-  double A = 0;   // cross-section pi r^2 [m^2]
-  double I = 0;   // second moment pi r^4 / 4 [m^4]
-  double J = 0;   // polar moment 2 I [m^4]
-  double r = 0;   // radius [m]
+  double E = 0;  // Young's modulus [Pa]
+  double G = 0;  // shear modulus E / (2 (1 + nu)) [Pa]
+  double A = 0;  // cross-section pi r^2 [m^2]
+  double I = 0;  // second moment pi r^4 / 4 [m^4]
+  double J = 0;  // polar moment 2 I [m^4]
+  double r = 0;  // radius [m]
 
   static RodMaterial from(const WireParams& w) {
     RodMaterial m;

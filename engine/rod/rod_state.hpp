@@ -15,11 +15,11 @@ struct RodState {
   int n_free = 0;                   // nodes [0, n_free) are dynamic, the rest are the guide
 
   // Twist degrees of freedom (empty when the scene has no twist effect).
-  std::vector<double> theta;        // material angle of edge j about its reference frame (n-1) [rad]
-  std::vector<double> omega;        // d theta / dt (n-1) [rad/s]
-  Vec3List ref1;                    // reference director of edge j, unit, normal to the edge (n-1)
-  Vec3List ref_tangent;             // unit tangent at which ref1 was last transported (n-1)
-  std::vector<double> ref_twist;    // reference twist at node i (n; 0 at the two ends) [rad]
+  std::vector<double> theta;      // material angle of edge j about its reference frame (n-1) [rad]
+  std::vector<double> omega;      // d theta / dt (n-1) [rad/s]
+  Vec3List ref1;                  // reference director of edge j, unit, normal to the edge (n-1)
+  Vec3List ref_tangent;           // unit tangent at which ref1 was last transported (n-1)
+  std::vector<double> ref_twist;  // reference twist at node i (n; 0 at the two ends) [rad]
 
   int num_nodes() const { return static_cast<int>(x.size()); }
   int num_edges() const { return static_cast<int>(x.size()) - 1; }

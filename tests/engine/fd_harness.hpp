@@ -99,6 +99,8 @@ inline void print_report(const FdReport& r) {
   std::printf("\n");
 }
 
-inline std::vector<double> default_fd_steps() { return {1e-2, 1e-3, 1e-4, 1e-5, 1e-6}; }
+inline std::vector<double> default_fd_steps() {
+  return {1e-2, 1e-3, 1e-4, 1e-5, 1e-6};
+}
 
 }  // namespace wirepack::testing

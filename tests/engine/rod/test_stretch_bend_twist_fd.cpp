@@ -27,8 +27,8 @@ TEST(RodFd, StretchGradientMatchesFiniteDifferences) {
   const auto mat = RodMaterial::from(WireParams{});
   for (unsigned seed = 1; seed <= 3; ++seed) {
     StretchTerm term(mat.EA());
-    expect_consistent(fd_check(term, random_rod(12, 0.5e-3, false, seed), 0.5e-3,
-                               default_fd_steps()));
+    expect_consistent(
+        fd_check(term, random_rod(12, 0.5e-3, false, seed), 0.5e-3, default_fd_steps()));
   }
 }
 
@@ -36,8 +36,8 @@ TEST(RodFd, BendGradientMatchesFiniteDifferences) {
   const auto mat = RodMaterial::from(WireParams{});
   for (unsigned seed = 1; seed <= 3; ++seed) {
     BendTerm term(mat.EI());
-    expect_consistent(fd_check(term, random_rod(12, 0.5e-3, false, seed), 0.5e-3,
-                               default_fd_steps()));
+    expect_consistent(
+        fd_check(term, random_rod(12, 0.5e-3, false, seed), 0.5e-3, default_fd_steps()));
   }
 }
 
@@ -45,8 +45,8 @@ TEST(RodFd, TwistGradientMatchesFiniteDifferences) {
   const auto mat = RodMaterial::from(WireParams{});
   for (unsigned seed = 1; seed <= 3; ++seed) {
     TwistTerm term(mat.GJ());
-    expect_consistent(fd_check(term, random_rod(12, 0.5e-3, true, seed), 0.5e-3,
-                               default_fd_steps()));
+    expect_consistent(
+        fd_check(term, random_rod(12, 0.5e-3, true, seed), 0.5e-3, default_fd_steps()));
   }
 }
 
