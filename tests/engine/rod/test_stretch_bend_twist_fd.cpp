@@ -5,7 +5,7 @@
 #include "engine/rod/material.hpp"
 #include "engine/rod/stretch.hpp"
 #include "engine/rod/twist.hpp"
-#include "fd_harness.hpp"
+#include "engine/fd_harness.hpp"
 
 namespace wirepack {
 namespace {
