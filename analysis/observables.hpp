@@ -1,6 +1,7 @@
 #pragma once
 // Observables of a wire configuration (DESIGN §4). Pure functions of the centerline: nodes in
 // order along the wire [m], any number n >= 0 (degenerate inputs give documented zeros).
+#include <cstddef>
 #include <span>
 #include <vector>
 
@@ -22,24 +23,28 @@ double total_curvature(Centerline x);
 // sum ell_i (x_i - xbar)(x_i - xbar)^T with the smallest eigenvalue (unit).
 // Sign: the component of largest magnitude is positive (S keeps its sign as a sense of rotation).
 Vec3 coil_normal(Centerline x);
-// Turning axis: eigenvector of sum_i |b_i| bhat_i bhat_i^T, b_i = t_{i-1} x t_i, with the largest
-// eigenvalue (unit, sign as coil_normal): the common binormal of a coil's turns, whatever the
-// bundle's aspect ratio (the coil normal tips into the plane of a coil taller than wide).
-Vec3 turning_axis(Centerline x);
+// Turning axis: eigenvector of sum_i |b_i| bhat_i bhat_i^T with the largest eigenvalue (unit,
+// sign as coil_normal), b_i = u_{i-k,i} x u_{i,i+k} over unit chords u spanning k = stride edges:
+// the common binormal of a coil's turns, whatever the bundle's aspect ratio (the coil normal tips
+// into the plane of a coil taller than wide). A stride of ~1/8 turn averages out node noise.
+Vec3 turning_axis(Centerline x, std::size_t stride = 1);
 struct Order {
   double S = 0;            // (1/L) sum ell_i sgn(n . (t_{i-1} x t_i)) [-]
   double D = 1;            // 1 - |S|
   Vec3 n = Vec3::UnitZ();  // axis used
 };
-// Order parameter of paper section "Order-disorder transition" with the coil-normal axis.
+// Order parameter of paper section "Order-disorder transition" with the coil-normal axis, sums
+// over interior nodes. No turning (n <= 2 nodes, a straight wire) gives S = 0, D = 1.
 Order order_parameter(Centerline x);
 // Paper: U_b_hat = U_b r^2 / (R E_w I).
 double bending_energy_hat(double U_b, double r, double R, double E_w);
 
-// Coil cross-section (DESIGN §4): in cylindrical coordinates about the turning axis through the
-// centroid, the bundle is fitted by two half-ellipses y >= R_t with semi-axes R_x (axial) and
-// R_y (radial). The radii describe the material envelope (wire surface, centerline + wire_radius).
-// Radii in metres; ok = false when the wire is too short or not coil-like (see coil_radii.cpp).
+// Coil cross-section (DESIGN §4): in cylindrical coordinates about the turning axis (through the
+// turning-weighted centroid), the bundle is fitted by two half-ellipses y >= R_t with semi-axes
+// R_x (axial) and R_y (radial). The radii describe the material envelope (the wire's surface:
+// centerline extremes + wire_radius), R_t being the innermost wire surface. Radii in metres;
+// ok = false when the wire makes less than one net turn about the axis or the fit degenerates
+// (see coil_radii.cpp).
 struct CoilRadii {
   double R_t = 0, R_x = 0, R_y = 0;
   bool ok = false;

@@ -55,6 +55,13 @@ Assembly assemble(const SceneParams& p) {
   a.terms.push_back(std::make_unique<BendTerm>(m.EI()));
   if (twist) a.terms.push_back(std::make_unique<TwistTerm>(m.GJ()));
 
+  // Coulomb friction, shared by every contact type (off when mu_s = 0).
+  FrictionParams fp;
+  fp.mu_s = p.mu_s;
+  fp.mu_d = p.mu_d;
+  fp.stiffness_ratio = 2.0 * (1.0 - w.poisson_ratio) / (2.0 - w.poisson_ratio);  // Mindlin
+  fp.damping_ratio = zeta;
+
   // Rigid sphere wall.
   SphereWallParams wp;
   wp.R = R;
@@ -64,6 +71,7 @@ Assembly assemble(const SceneParams& p) {
                                 std::numeric_limits<double>::infinity(), 0.0);
   wp.damping_ratio = zeta;
   wp.node_mass = a.inertia.node_mass;
+  wp.friction = fp;
   auto wall = std::make_unique<SphereWallTerm>(wp);
   a.wall = wall.get();
   a.terms.push_back(std::move(wall));
@@ -77,6 +85,7 @@ Assembly assemble(const SceneParams& p) {
   sp.skin = SceneConstants::kSkin * r;
   sp.damping_ratio = zeta;
   sp.node_mass = a.inertia.node_mass;
+  sp.friction = fp;
   auto self = std::make_unique<SelfContactTerm>(sp);
   a.self_contact = self.get();
   a.terms.push_back(std::move(self));

@@ -40,6 +40,7 @@ struct Simulation::Impl {
   // Generalised accelerations of the dynamic DOFs; returns omega_max^2 [1/s^2].
   double evaluate(RodState& s, Vec3List& a, std::vector<double>& alpha) {
     forces.reset(s);
+    for (auto& t : assembly.terms) t->begin_trial(integrator.trial_dt());
     double omega2 = 0.0;
     for (size_t k = 0; k < assembly.terms.size(); ++k) {
       term_energy[k] = assembly.terms[k]->accumulate(s, forces);
@@ -67,6 +68,11 @@ struct Simulation::Impl {
     return [](RodState& s) { update_reference_frames(s); };
   }
 
+  // Accepts the history of the last evaluation (friction springs).
+  void commit() {
+    for (auto& t : assembly.terms) t->commit();
+  }
+
   void check_state() const {
     const double R = params.R();
     const double r = params.wire.radius;
@@ -84,10 +90,14 @@ struct Simulation::Impl {
 
   void step() {
     const double dt = integrator.step(state, eval_fn(), moved_fn());
+    commit();
     time += dt;
     ++steps;
     check_state();
-    if (feeder.release(state) > 0) integrator.initialise(state, eval_fn(), moved_fn());
+    if (feeder.release(state) > 0) {
+      integrator.initialise(state, eval_fn(), moved_fn());
+      commit();
+    }
   }
 
   double energy_of(const char* name) const {
@@ -163,7 +173,12 @@ int Simulation::wire_contacts() const {
 
 std::vector<std::string> Simulation::term_names() const {
   std::vector<std::string> names;
-  for (const auto& t : impl_->assembly.terms) names.push_back(t->name());
+  bool friction = false;
+  for (const auto& t : impl_->assembly.terms) {
+    names.push_back(t->name());
+    friction = friction || t->has_friction();
+  }
+  if (friction) names.push_back("friction");
   return names;
 }
 

@@ -25,6 +25,12 @@ class Term {
   // Square of the highest angular frequency this term can excite at the state of the last
   // accumulate() [1/s^2]; bounds the explicit time step.
   virtual double omega_max_sq(const RodInertia& inertia) const = 0;
+
+  // History-dependent terms (friction): the next accumulate() belongs to a trial step of size
+  // dt [s] (0: re-evaluation at the same instant); commit() accepts the last trial.
+  virtual void begin_trial(double /*dt*/) {}
+  virtual void commit() {}
+  virtual bool has_friction() const { return false; }
 };
 
 }  // namespace wirepack

@@ -12,6 +12,7 @@ SelfContactTerm::SelfContactTerm(const SelfContactParams& p)
   // Exclude |a - b| - 1 edges of arc-length gap shorter than pi r (a hairpin of radius r).
   exclude_ = static_cast<int>(std::ceil(1.0 + M_PI * p.r / p.element_length)) - 1;
   exclude_ = std::max(exclude_, 1);
+  if (p.friction.enabled()) friction_ = std::make_unique<FrictionHistory>(p.friction);
 }
 
 void SelfContactTerm::maybe_rebuild(const RodState& s) {
@@ -52,19 +53,16 @@ double SelfContactTerm::accumulate(const RodState& s, RodForces& out) {
   maybe_rebuild(s);
   contacts_.clear();
   double U = 0.0;
-  double kmax = 0.0;
   const double contact = 2.0 * p_.r;
-  const double m_eff = 0.5 * p_.node_mass;
+  // Narrow phase: every touching pair with its closest points and normal.
   for (const auto& [a, b] : candidates_) {
     const Vec3 &a0 = s.x[a], &a1 = s.x[a + 1], &b0 = s.x[b], &b1 = s.x[b + 1];
     const SegmentClosest c = segment_segment_closest(a0, a1, b0, b1);
     if (c.dist2 >= contact * contact) continue;
     const double dist = std::sqrt(c.dist2);
-    const Vec3 pa = a0 + c.s * (a1 - a0);
-    const Vec3 pb = b0 + c.t * (b1 - b0);
     Vec3 n;
     if (dist > 1e-12 * p_.r) {
-      n = (pa - pb) / dist;
+      n = (a0 + c.s * (a1 - a0) - b0 - c.t * (b1 - b0)) / dist;
     } else {
       // Axes intersect: push apart along the common normal of the two segments.
       n = (a1 - a0).cross(b1 - b0);
@@ -73,19 +71,52 @@ double SelfContactTerm::accumulate(const RodState& s, RodForces& out) {
     }
     const double delta = contact - dist;
     U += hertz_.energy(delta);
+    contacts_.push_back(WireContact{a, b, c.s, c.t, n, delta, 0.0});
+  }
+  if (friction_) {
+    for (const WireContact& c : contacts_) friction_->mark(ContactKey{c.a, c.b});
+    friction_->finish_marking();
+  }
+  // Forces: Hertz + normal dashpot, then Coulomb friction at the surfaces.
+  double kmax = 0.0;
+  const double m_eff = 0.5 * p_.node_mass;
+  const bool twist = s.has_twist();
+  const double r = p_.r;
+  for (WireContact& c : contacts_) {
+    const int a = c.a, b = c.b;
+    const Vec3& n = c.normal;  // from b to a
     const Vec3 va = (1.0 - c.s) * s.v[a] + c.s * s.v[a + 1];
     const Vec3 vb = (1.0 - c.t) * s.v[b] + c.t * s.v[b + 1];
     const double approach = -(va - vb).dot(n);
-    const double f = damped_normal_force(hertz_, delta, approach, p_.damping_ratio, m_eff);
-    const Vec3 F = f * n;  // on edge a; -F on edge b
+    const double fn = damped_normal_force(hertz_, c.delta, approach, p_.damping_ratio, m_eff);
+    c.force = fn;
+    Vec3 F = fn * n;  // on edge a; -F on edge b
+    const double kn = hertz_.stiffness(c.delta);
+    kmax = std::max(kmax, kn);
+    Vec3 ta, tb;
+    if (friction_) {
+      // Surface points: a at -r n from its axis, b at +r n; spin adds omega t x (offset).
+      Vec3 v_rel = va - vb;
+      if (twist) {
+        ta = (s.x[a + 1] - s.x[a]).normalized();
+        tb = (s.x[b + 1] - s.x[b]).normalized();
+        v_rel += s.omega[a] * ta.cross(-r * n) - s.omega[b] * tb.cross(r * n);
+      }
+      const ContactKey nb[8] = {{a + 1, b},     {a - 1, b},     {a, b + 1},     {a, b - 1},
+                                {a + 1, b + 1}, {a - 1, b - 1}, {a + 1, b - 1}, {a - 1, b + 1}};
+      const Vec3 ft = friction_->force(ContactKey{a, b}, n, fn, kn, v_rel, m_eff, nb, 8);
+      F += ft;
+      if (twist) {
+        out.torque[a] += (-r * n).cross(ft).dot(ta);
+        out.torque[b] += (r * n).cross(-ft).dot(tb);
+      }
+    }
     out.f[a] += (1.0 - c.s) * F;
     out.f[a + 1] += c.s * F;
     out.f[b] -= (1.0 - c.t) * F;
     out.f[b + 1] -= c.t * F;
-    kmax = std::max(kmax, hertz_.stiffness(delta));
-    contacts_.push_back(WireContact{a, b, c.s, c.t, n, delta, f});
   }
-  max_stiffness_ = kmax;
+  max_stiffness_ = kmax * (friction_ ? 1.0 + p_.friction.stiffness_ratio : 1.0);
   return U;
 }
 

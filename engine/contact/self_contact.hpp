@@ -6,10 +6,12 @@
 // Pairs closer than pi r in arc length along the wire (a hairpin of radius r) are excluded, so a
 // bent wire does not repel itself. Normal force: Hertz with E* = E_w / (2 (1 - nu_w^2)) and the
 // crossed-cylinders radius R* = r.
+#include <memory>
 #include <utility>
 #include <vector>
 
 #include "engine/contact/cell_grid.hpp"
+#include "engine/contact/friction.hpp"
 #include "engine/contact/hertz.hpp"
 #include "engine/term.hpp"
 
@@ -22,6 +24,7 @@ struct SelfContactParams {
   double skin = 0;            // Verlet-list margin [m]
   double damping_ratio = 0;   // contact dashpot zeta [-]
   double node_mass = 0;       // [kg]
+  FrictionParams friction;    // off when mu_s = 0
 };
 
 // One touching pair at the last accumulate: edges a < b, closest-point parameters, unit normal
@@ -44,6 +47,14 @@ class SelfContactTerm : public Term {
 
   int contacts() const { return static_cast<int>(contacts_.size()); }  // N of DESIGN §4
   const std::vector<WireContact>& contact_list() const { return contacts_; }
+  void begin_trial(double dt) override {
+    if (friction_) friction_->begin_trial(dt);
+  }
+  void commit() override {
+    if (friction_) friction_->commit();
+  }
+  bool has_friction() const override { return friction_ != nullptr; }
+  const FrictionHistory* friction() const { return friction_.get(); }
   int exclusion() const { return exclude_; }
   long rebuilds() const { return rebuilds_; }
 
@@ -65,6 +76,7 @@ class SelfContactTerm : public Term {
   long rebuilds_ = 0;
   std::vector<WireContact> contacts_;
   double max_stiffness_ = 0;
+  std::unique_ptr<FrictionHistory> friction_;  // null when mu_s = 0 (no history, no torques)
 };
 
 }  // namespace wirepack

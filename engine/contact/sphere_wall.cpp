@@ -8,7 +8,9 @@ SphereWallTerm::SphereWallTerm(const SphereWallParams& p)
     : p_(p),
       wall_(Hertz::from(p.E_star, p.r * p.R / (p.R - p.r))),
       rim_(Hertz::from(p.E_star, p.r)),
-      z_rim_(-std::sqrt(p.R * p.R - p.hole_radius * p.hole_radius)) {}
+      z_rim_(-std::sqrt(p.R * p.R - p.hole_radius * p.hole_radius)) {
+  if (p.friction.enabled()) friction_ = std::make_unique<FrictionHistory>(p.friction);
+}
 
 bool SphereWallTerm::overlap(const Vec3& x, double& delta, Vec3& normal, bool& rim) const {
   const double rho_perp2 = x[0] * x[0] + x[1] * x[1];
@@ -32,39 +34,73 @@ bool SphereWallTerm::overlap(const Vec3& x, double& delta, Vec3& normal, bool& r
   return true;
 }
 
-template <bool kForces>
-double SphereWallTerm::visit(const RodState& s, RodForces* out) {
+double SphereWallTerm::accumulate(const RodState& s, RodForces& out) {
   double U = 0.0;
-  double kmax = 0.0;
-  int count = 0;
+  touching_.clear();
   for (int i = 0; i < s.n_free; ++i) {
     double delta;
     Vec3 n;
     bool rim;
     if (!overlap(s.x[i], delta, n, rim)) continue;
-    const Hertz& h = rim ? rim_ : wall_;
-    U += h.energy(delta);
-    ++count;
-    if constexpr (kForces) {
-      const double approach = s.v[i].dot(n);  // speed towards the wall [m/s]
-      const double f = damped_normal_force(h, delta, approach, p_.damping_ratio, p_.node_mass);
-      out->f[i] -= f * n;
-      kmax = std::max(kmax, h.stiffness(delta));
+    U += (rim ? rim_ : wall_).energy(delta);
+    touching_.push_back(Touch{i, delta, n, rim});
+  }
+  double kmax = 0.0;
+  if (friction_) {
+    for (const Touch& t : touching_) friction_->mark(ContactKey{t.node, -1});
+    friction_->finish_marking();
+  }
+  const bool twist = s.has_twist();
+  const double r = p_.r;
+  for (const Touch& t : touching_) {
+    const int i = t.node;
+    const Hertz& h = t.rim ? rim_ : wall_;
+    const Vec3& n = t.normal;               // from the node towards the wall
+    const double approach = s.v[i].dot(n);  // speed towards the wall [m/s]
+    const double fn = damped_normal_force(h, t.delta, approach, p_.damping_ratio, p_.node_mass);
+    out.f[i] -= fn * n;
+    const double kn = h.stiffness(t.delta);
+    kmax = std::max(kmax, kn);
+    if (!friction_) continue;
+    // Surface point of the wire at the contact: x_i + r n; its velocity includes the spin of
+    // the adjacent edges (omega t x r n), averaged over the two edges of the node.
+    // Weights w_e of the node's edges (1/2 each, 1 at an end): the same weights spread the
+    // torque, so the friction power is the same seen from the forces and from the velocities.
+    Vec3 v_surf = s.v[i];
+    const int e_lo = std::max(i - 1, 0), e_hi = std::min(i, s.num_edges() - 1);
+    const double w = e_hi > e_lo ? 0.5 : 1.0;
+    if (twist) {
+      for (int e = e_lo; e <= e_hi; ++e) {
+        const Vec3 te = (s.x[e + 1] - s.x[e]).normalized();
+        v_surf += w * s.omega[e] * te.cross(r * n);
+      }
+    }
+    // The wall is body B (at rest); the normal of the contact points from B to A: -n.
+    const ContactKey nb[2] = {{i - 1, -1}, {i + 1, -1}};
+    const Vec3 ft = friction_->force(ContactKey{i, -1}, -n, fn, kn, v_surf, p_.node_mass, nb, 2);
+    out.f[i] += ft;
+    if (twist) {
+      // Torque of the surface force about the centreline, shared by the two edges.
+      for (int e = e_lo; e <= e_hi; ++e) {
+        const Vec3 te = (s.x[e + 1] - s.x[e]).normalized();
+        out.torque[e] += w * (r * n).cross(ft).dot(te);
+      }
     }
   }
-  if constexpr (kForces) {
-    max_stiffness_ = kmax;
-    contacts_ = count;
-  }
+  max_stiffness_ = kmax * (friction_ ? 1.0 + p_.friction.stiffness_ratio : 1.0);
+  contacts_ = static_cast<int>(touching_.size());
   return U;
 }
 
-double SphereWallTerm::accumulate(const RodState& s, RodForces& out) {
-  return visit<true>(s, &out);
-}
-
 double SphereWallTerm::energy(const RodState& s) {
-  return visit<false>(s, nullptr);
+  double U = 0.0;
+  for (int i = 0; i < s.n_free; ++i) {
+    double delta;
+    Vec3 n;
+    bool rim;
+    if (overlap(s.x[i], delta, n, rim)) U += (rim ? rim_ : wall_).energy(delta);
+  }
+  return U;
 }
 
 double SphereWallTerm::omega_max_sq(const RodInertia& inertia) const {

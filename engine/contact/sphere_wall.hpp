@@ -5,6 +5,9 @@
 // E* = E_w / (1 - nu_w^2) (rigid wall). Around the entrance hole (radius r_h, at the south pole
 // (0,0,-R)) the wall is absent; there the node touches the hole's rim circle instead, treated as
 // an edge (R* = r).
+#include <memory>
+
+#include "engine/contact/friction.hpp"
 #include "engine/contact/hertz.hpp"
 #include "engine/term.hpp"
 
@@ -17,6 +20,7 @@ struct SphereWallParams {
   double E_star = 0;         // effective modulus [Pa]
   double damping_ratio = 0;  // contact dashpot zeta [-]
   double node_mass = 0;      // [kg]
+  FrictionParams friction;   // off when mu_s = 0
 };
 
 class SphereWallTerm : public Term {
@@ -27,18 +31,32 @@ class SphereWallTerm : public Term {
   double energy(const RodState& s) override;
   double omega_max_sq(const RodInertia& inertia) const override;
   int contacts() const { return contacts_; }  // nodes touching the wall at the last accumulate
+  void begin_trial(double dt) override {
+    if (friction_) friction_->begin_trial(dt);
+  }
+  void commit() override {
+    if (friction_) friction_->commit();
+  }
+  bool has_friction() const override { return friction_ != nullptr; }
+  const FrictionHistory* friction() const { return friction_.get(); }
 
  private:
   // Overlap and outward unit normal (from the wire towards the wall) of node x; false if none.
   bool overlap(const Vec3& x, double& delta, Vec3& normal, bool& rim) const;
-  template <bool kForces>
-  double visit(const RodState& s, RodForces* out);
 
   SphereWallParams p_;
   Hertz wall_, rim_;
   double z_rim_;              // z of the hole rim circle [m]
   double max_stiffness_ = 0;  // largest contact stiffness at the last accumulate [N/m]
   int contacts_ = 0;
+  std::unique_ptr<FrictionHistory> friction_;  // null when mu_s = 0 (no history, no torques)
+  struct Touch {
+    int node;
+    double delta;
+    Vec3 normal;
+    bool rim;
+  };
+  std::vector<Touch> touching_;  // nodes in contact at the last accumulate
 };
 
 }  // namespace wirepack

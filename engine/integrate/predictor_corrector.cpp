@@ -16,6 +16,7 @@ double PredictorCorrector::stable_step(double omega2) const {
 void PredictorCorrector::initialise(RodState& s, const EvaluateFn& eval,
                                     const PositionsChangedFn& moved) {
   moved(s);
+  trial_dt_ = 0.0;
   const double omega2 = eval(s, a_, alpha_);
   dt_stable_ = stable_step(omega2);
   if (dt_ <= 0) dt_ = 0.1 * dt_stable_;  // start cautiously; the controller grows it
@@ -48,6 +49,7 @@ double PredictorCorrector::step(RodState& s, const EvaluateFn& eval,
       s.omega[j] = om0_[j] + dt * alpha_[j];
     }
     moved(s);
+    trial_dt_ = dt;
     const double omega2 = eval(s, a_new_, alpha_new_);
     // Corrector error estimate: dt^2/6 |a' - a| (positions), r dt^2/6 |alpha' - alpha| (twist).
     double da = 0.0;

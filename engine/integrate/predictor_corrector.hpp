@@ -39,6 +39,8 @@ class PredictorCorrector {
   double step(RodState& s, const EvaluateFn& eval, const PositionsChangedFn& moved);
 
   double dt() const { return dt_; }
+  // Size of the step being tried during an evaluation (0 during initialise) [s].
+  double trial_dt() const { return trial_dt_; }
   double dt_stable() const { return dt_stable_; }
   long rejected() const { return rejected_; }
   const Vec3List& acceleration() const { return a_; }
@@ -48,7 +50,7 @@ class PredictorCorrector {
 
   StepControl c_;
   double r_;  // length scale of the twist error (wire radius) [m]
-  double dt_ = 0, dt_stable_ = 0;
+  double dt_ = 0, dt_stable_ = 0, trial_dt_ = 0;
   long rejected_ = 0;
   Vec3List a_, a_new_, x0_, v0_;
   std::vector<double> alpha_, alpha_new_, th0_, om0_;

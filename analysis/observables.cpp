@@ -1,0 +1,163 @@
+// Observables of a wire centerline (DESIGN §4): Voronoi lengths, discrete curvature, total
+// curvature K, coil normal, turning axis, order parameter S, D, and the scaled bending energy.
+// The coil cross-section fit (R_t, R_x, R_y) is in coil_radii.cpp.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <Eigen/Eigenvalues>
+
+#include "analysis/observables.hpp"
+
+namespace wirepack::analysis {
+namespace {
+
+// tan(phi / 2) cap for an exact reversal t1 = -t0 (phi = pi, a zero-length hairpin): the true
+// value is infinite; a finite cap keeps K and kappa finite for such degenerate input.
+constexpr double kTanHalfMax = 1e8;
+
+// Turning at a node below this |t0 x t1| (unit tangents, i.e. sin phi) is round-off of a straight
+// wire (a few ulp of 1), not a sense of rotation: it counts as "exact zero" in S.
+constexpr double kZeroTurn = 1e-12;
+
+// Unit tangent of edge e = (x_e, x_{e+1}); false for a zero-length edge.
+bool edge_tangent(Centerline x, std::size_t e, Vec3& t) {
+  const Vec3 d = x[e + 1] - x[e];
+  const double len = d.norm();
+  if (!(len > 0)) return false;
+  t = d / len;
+  return true;
+}
+
+// tan(phi / 2) of the angle phi between unit tangents t0, t1, in full relative precision:
+// sin(phi) / (1 + cos(phi)) for phi <= pi/2, the equal (1 - cos(phi)) / sin(phi) beyond
+// (avoids 0/0 cancellation as phi -> pi).
+double tan_half_turn(const Vec3& t0, const Vec3& t1) {
+  const double s = t0.cross(t1).norm();
+  const double c = t0.dot(t1);
+  if (c >= 0) return s / (1 + c);
+  if (s * kTanHalfMax <= 1 - c) return kTanHalfMax;
+  return (1 - c) / s;
+}
+
+// Deterministic sign of an eigenvector: its component of largest magnitude is made positive
+// (the lowest index wins a tie). The sign can only flip where two components are nearly equal in
+// magnitude; D = 1 - |S| never depends on it.
+Vec3 canonical_sign(const Vec3& v) {
+  Eigen::Index k = 0;
+  v.cwiseAbs().maxCoeff(&k);
+  return v[k] < 0 ? Vec3(-v) : v;
+}
+
+}  // namespace
+
+// Voronoi lengths ell_i = (|e_{i-1}| + |e_i|) / 2 with missing edges counted as 0 (n) [m].
+std::vector<double> voronoi_lengths(Centerline x) {
+  std::vector<double> ell(x.size(), 0.0);
+  for (std::size_t e = 0; e + 1 < x.size(); ++e) {
+    const double half = 0.5 * (x[e + 1] - x[e]).norm();
+    ell[e] += half;
+    ell[e + 1] += half;
+  }
+  return ell;
+}
+
+// DESIGN §4: kappa_i = 2 tan(phi_i / 2) / ell_i at interior nodes, 0 at the ends and wherever an
+// adjacent edge has zero length (n) [1/m].
+std::vector<double> curvatures(Centerline x) {
+  std::vector<double> kappa(x.size(), 0.0);
+  const std::vector<double> ell = voronoi_lengths(x);
+  Vec3 t0, t1;
+  for (std::size_t i = 1; i + 1 < x.size(); ++i) {
+    if (!edge_tangent(x, i - 1, t0) || !edge_tangent(x, i, t1)) continue;
+    kappa[i] = 2 * tan_half_turn(t0, t1) / ell[i];
+  }
+  return kappa;
+}
+
+// K = sum_i kappa_i ell_i = sum_i 2 tan(phi_i / 2) [-].
+double total_curvature(Centerline x) {
+  double K = 0;
+  Vec3 t0, t1;
+  for (std::size_t i = 1; i + 1 < x.size(); ++i) {
+    if (!edge_tangent(x, i - 1, t0) || !edge_tangent(x, i, t1)) continue;
+    K += 2 * tan_half_turn(t0, t1);
+  }
+  return K;
+}
+
+// DESIGN §4 axis: smallest-eigenvalue eigenvector of G = sum ell_i (x_i - xbar)(x_i - xbar)^T,
+// xbar the length-weighted centroid. +z when the wire has no length (n < 2 or all nodes equal).
+Vec3 coil_normal(Centerline x) {
+  const std::vector<double> ell = voronoi_lengths(x);
+  double L = 0;
+  Vec3 xbar = Vec3::Zero();
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    L += ell[i];
+    xbar += ell[i] * x[i];
+  }
+  if (!(L > 0)) return Vec3::UnitZ();
+  xbar /= L;
+  Eigen::Matrix3d G = Eigen::Matrix3d::Zero();
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const Vec3 d = x[i] - xbar;
+    G += ell[i] * d * d.transpose();
+  }
+  // Eigenvalues come in increasing order: column 0 is the coil normal.
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(G / L);
+  return canonical_sign(eig.eigenvectors().col(0).normalized());
+}
+
+// Turning axis: largest-eigenvalue eigenvector of B = sum_i |b_i| bhat_i bhat_i^T over nodes
+// k <= i < n - k, b_i = u_{i-k,i} x u_{i,i+k} with u_{j,l} the unit chord from x_j to x_l
+// (|b_i| = sin of the turning over the chords): the common binormal of a coil's turns. +z when the
+// wire never turns.
+Vec3 turning_axis(Centerline x, std::size_t stride) {
+  const std::size_t k = std::max<std::size_t>(stride, 1);
+  Eigen::Matrix3d B = Eigen::Matrix3d::Zero();
+  double w = 0;
+  for (std::size_t i = k; i + k < x.size(); ++i) {
+    const Vec3 d0 = x[i] - x[i - k], d1 = x[i + k] - x[i];
+    const double l0 = d0.norm(), l1 = d1.norm();
+    if (!(l0 > 0 && l1 > 0)) continue;
+    const Vec3 b = (d0 / l0).cross(d1 / l1);
+    const double s = b.norm();
+    if (!(s > kZeroTurn)) continue;
+    B += b * b.transpose() / s;
+    w += s;
+  }
+  if (!(w > 0)) return Vec3::UnitZ();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(B / w);
+  return canonical_sign(eig.eigenvectors().col(2).normalized());
+}
+
+// Paper "Order-disorder transition" with the DESIGN §4 axis n = coil_normal:
+// S = (1/L) sum_i ell_i sgn(n . (t_{i-1} x t_i)) over interior nodes, L = sum of those ell_i.
+// A node with (numerically) zero turning, or a zero-length adjacent edge, contributes 0 to the sum
+// but its ell_i to L. Fewer than 3 nodes, or no length, give S = 0, D = 1 (no turning at all).
+Order order_parameter(Centerline x) {
+  Order o;
+  if (x.size() < 3) return o;
+  o.n = coil_normal(x);
+  const std::vector<double> ell = voronoi_lengths(x);
+  double L = 0, sum = 0;
+  Vec3 t0, t1;
+  for (std::size_t i = 1; i + 1 < x.size(); ++i) {
+    L += ell[i];
+    if (!edge_tangent(x, i - 1, t0) || !edge_tangent(x, i, t1)) continue;
+    const double kn = o.n.dot(t0.cross(t1));
+    if (kn > kZeroTurn) sum += ell[i];
+    if (kn < -kZeroTurn) sum -= ell[i];
+  }
+  o.S = L > 0 ? sum / L : 0.0;
+  o.D = 1 - std::abs(o.S);
+  return o;
+}
+
+// Paper: U_b_hat = U_b r^2 / (R E_w I), I = pi r^4 / 4 [-]; U_b [J], r, R [m], E_w [Pa].
+double bending_energy_hat(double U_b, double r, double R, double E_w) {
+  const double I = std::numbers::pi * std::pow(r, 4) / 4;
+  return U_b * r * r / (R * E_w * I);
+}
+
+}  // namespace wirepack::analysis

@@ -1,0 +1,93 @@
+#pragma once
+// Coulomb friction with true stick-slip (Cundall & Strack 1979; DESIGN §3), one mechanism for
+// every contact type (wire-wire, wire-wall, and later wire-shell, shell-shell).
+//
+// Each contact keeps a tangential force F_t in a history keyed by the pair of elements. Every
+// step F_t is rotated into the current tangent plane (keeping its magnitude) and incremented by
+// -k_t v_t dt (an elastic tangential spring; v_t the relative tangential surface velocity).
+// Stick while |F_t| <= mu_s F_n; beyond, the contact slips with |F_t| = mu_d F_n and the spring
+// is reset to that bound; a slipping contact sticks again once the spring force falls below
+// mu_d F_n. The tangential stiffness follows Mindlin: k_t = 2 (1 - nu) / (2 - nu) k_n with the
+// Hertz normal stiffness k_n = dF_n/d delta. A history entry is dropped when its contact opens;
+// a new contact first inherits the entry of a neighbouring element pair that has just opened,
+// so a wire sliding along another wire or the wall keeps its stick state across element
+// boundaries.
+//
+// The history is transactional: evaluate() writes trial values for the step being tried;
+// commit() makes the trial of the accepted step the new state and drops contacts that were not
+// seen in it; a rejected step is simply evaluated again.
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+#include "engine/types.hpp"
+
+namespace wirepack {
+
+struct FrictionParams {
+  double mu_s = 0;             // static coefficient [-]
+  double mu_d = 0;             // dynamic coefficient [-], <= mu_s
+  double stiffness_ratio = 0;  // k_t / k_n (Mindlin: 2 (1 - nu) / (2 - nu)) [-]
+  double damping_ratio = 0;    // tangential dashpot ratio while sticking [-]
+  bool enabled() const { return mu_s > 0.0; }
+};
+
+// Key of a contact: two element ids (b = -1 for a rigid wall).
+struct ContactKey {
+  int a = 0, b = 0;
+  std::uint64_t packed() const {
+    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
+           static_cast<std::uint32_t>(b);
+  }
+};
+
+class FrictionHistory {
+ public:
+  explicit FrictionHistory(const FrictionParams& p) : p_(p) {}
+
+  // Starts the evaluation of a trial step of size dt [s] (0 for a re-evaluation that must not
+  // advance the springs).
+  void begin_trial(double dt) {
+    dt_ = dt;
+    ++trial_;
+    seen_.clear();
+  }
+  // Marks a contact as present in this trial (first pass over all contacts, before forces),
+  // so neighbour transfer only takes entries whose own contact has opened.
+  void mark(ContactKey k) { seen_.push_back(k.packed()); }
+  void finish_marking();
+
+  // Friction force on body A of contact `k` [N], given the unit normal n (from B to A), the
+  // normal force F_n >= 0 [N], the normal stiffness k_n [N/m], the relative tangential-plane
+  // velocity v_rel = v_A - v_B of the surfaces at the contact [m/s] and the effective mass
+  // [kg] for the tangential dashpot. `neighbours` lists keys whose history a new contact may
+  // inherit, in order of preference.
+  Vec3 force(ContactKey k, const Vec3& n, double F_n, double k_n, const Vec3& v_rel, double m_eff,
+             const ContactKey* neighbours, int num_neighbours);
+
+  // Accepts the last trial: its springs become the state, contacts not seen are dropped.
+  void commit();
+
+  std::size_t size() const { return map_.size(); }
+  long slipping() const { return slipping_; }  // contacts slipping in the last trial
+  const FrictionParams& params() const { return p_; }
+
+ private:
+  struct Entry {
+    Vec3 F = Vec3::Zero();        // committed tangential force on A [N]
+    bool sliding = false;         // committed state
+    Vec3 F_trial = Vec3::Zero();  // value in the current trial
+    bool sliding_trial = false;
+    long trial = -1;  // last trial that evaluated this contact
+  };
+  bool seen_this_trial(std::uint64_t key) const;
+
+  FrictionParams p_;
+  std::unordered_map<std::uint64_t, Entry> map_;
+  std::vector<std::uint64_t> seen_;  // sorted keys present in the current trial
+  double dt_ = 0;
+  long trial_ = 0;
+  long slipping_ = 0;
+};
+
+}  // namespace wirepack

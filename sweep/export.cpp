@@ -1,0 +1,162 @@
+#include "sweep/export.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "sweep/format.hpp"
+#include "sweep/run_file.hpp"
+
+namespace wirepack::sweep {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Writes `text` to `path` through `path.tmp` and a rename (STYLE §9).
+void write_text_file(const std::string& path, const std::string& text) {
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out) throw RunFileError("cannot create " + tmp);
+    out << text;
+    out.close();
+    if (!out) {
+      std::error_code ec;
+      fs::remove(tmp, ec);
+      throw RunFileError("cannot write " + tmp);
+    }
+  }
+  std::error_code ec;
+  fs::rename(tmp, path, ec);
+  if (ec) {
+    std::error_code ignored;
+    fs::remove(tmp, ignored);
+    throw RunFileError("rename " + tmp + " to " + path + ": " + ec.message());
+  }
+}
+
+std::string xml_escape(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
+// Path of the run file as seen from the directory of the .xmf file.
+std::string relative_run_path(const std::string& run_file, const std::string& xmf_path) {
+  const fs::path run = fs::absolute(run_file).lexically_normal();
+  const fs::path dir = fs::absolute(xmf_path).lexically_normal().parent_path();
+  const fs::path rel = run.lexically_relative(dir);
+  return (rel.empty() ? run : rel).generic_string();
+}
+
+}  // namespace
+
+void export_csv(const std::string& run_file, const std::string& csv_path) {
+  const RunRecord r = read_run_file(run_file);
+  std::ostringstream out;
+  std::size_t rows = 0;
+  for (std::size_t c = 0; c < r.series.size(); ++c) {
+    out << (c ? "," : "") << r.series[c].name;
+    rows = std::max(rows, r.series[c].values.size());
+  }
+  out << '\n';
+  for (std::size_t i = 0; i < rows; ++i) {
+    for (std::size_t c = 0; c < r.series.size(); ++c) {
+      const auto& v = r.series[c].values;
+      out << (c ? "," : "") << (i < v.size() ? format_number(v[i]) : "");
+    }
+    out << '\n';
+  }
+  write_text_file(csv_path, out.str());
+}
+
+void export_xdmf(const std::string& run_file, const std::string& xmf_path) {
+  const RunRecord r = read_run_file(run_file);
+  const std::string h5 = xml_escape(relative_run_path(run_file, xmf_path));
+  std::ostringstream x;
+  x << "<?xml version=\"1.0\" ?>\n"
+    << "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
+    << "<Xdmf Version=\"3.0\" xmlns:xi=\"http://www.w3.org/2001/XInclude\">\n"
+    << "  <Domain>\n"
+    << "    <Grid Name=\"run\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+  for (std::size_t k = 0; k < r.snapshots.size(); ++k) {
+    const Snapshot& s = r.snapshots[k];
+    const std::size_t n = s.wire.size();
+    const std::size_t m = s.shell_vertices.size();
+    const std::size_t f = s.shell_triangles.size();
+    const bool has_wire = n >= 2;  // a polyline needs a segment
+    const bool has_shell = m > 0 && f > 0;
+    const std::string snap = "/snapshots/" + std::to_string(k);
+    if (!has_wire && !has_shell) {
+      x << "      <!-- snapshot " << k << " (l = " << format_number(s.l)
+        << "): fewer than two wire nodes, nothing to draw -->\n";
+      continue;
+    }
+    // One spatial collection per time step: the wire and, if present, the shell.
+    x << "      <Grid Name=\"snapshot_" << k << "\" GridType=\"Collection\" "
+      << "CollectionType=\"Spatial\">\n"
+      << "        <Time Value=\"" << format_number(s.l) << "\" />\n";
+    if (has_wire) {
+      x << "        <Grid Name=\"wire\" GridType=\"Uniform\">\n"
+        << "          <Topology TopologyType=\"Polyline\" NumberOfElements=\"" << n - 1
+        << "\" NodesPerElement=\"2\">\n"
+        << "            <DataItem Dimensions=\"" << n - 1
+        << " 2\" NumberType=\"Int\" Precision=\"4\" Format=\"XML\">";
+      for (std::size_t i = 0; i + 1 < n; ++i) x << (i ? " " : "") << i << ' ' << i + 1;
+      x << "</DataItem>\n"
+        << "          </Topology>\n"
+        << "          <Geometry GeometryType=\"XYZ\">\n"
+        << "            <DataItem Dimensions=\"" << n
+        << " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << h5 << ':' << snap
+        << "/wire</DataItem>\n"
+        << "          </Geometry>\n";
+      if (s.curvature.size() == n)
+        x << "          <Attribute Name=\"curvature\" AttributeType=\"Scalar\" Center=\"Node\">\n"
+          << "            <DataItem Dimensions=\"" << n
+          << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << h5 << ':' << snap
+          << "/curvature</DataItem>\n"
+          << "          </Attribute>\n";
+      x << "        </Grid>\n";
+    }
+    if (has_shell) {
+      x << "        <Grid Name=\"shell\" GridType=\"Uniform\">\n"
+        << "          <Topology TopologyType=\"Triangle\" NumberOfElements=\"" << f << "\">\n"
+        << "            <DataItem Dimensions=\"" << f
+        << " 3\" NumberType=\"Int\" Precision=\"4\" Format=\"HDF\">" << h5 << ':' << snap
+        << "/shell_triangles</DataItem>\n"
+        << "          </Topology>\n"
+        << "          <Geometry GeometryType=\"XYZ\">\n"
+        << "            <DataItem Dimensions=\"" << m
+        << " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << h5 << ':' << snap
+        << "/shell_vertices</DataItem>\n"
+        << "          </Geometry>\n"
+        << "        </Grid>\n";
+    }
+    x << "      </Grid>\n";
+  }
+  x << "    </Grid>\n"
+    << "  </Domain>\n"
+    << "</Xdmf>\n";
+  write_text_file(xmf_path, x.str());
+}
+
+}  // namespace wirepack::sweep

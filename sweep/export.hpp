@@ -1,0 +1,18 @@
+#pragma once
+// `wirepack export` (DESIGN §5, §6): a run file's series as CSV, its snapshots as an XDMF
+// sidecar for ParaView. Both are written to a temporary name and renamed when complete.
+#include <string>
+
+namespace wirepack::sweep {
+
+// One header row with the series names in recording order, then one row per record;
+// numbers in shortest round-trip form ("nan" where an observable is undefined).
+// Throws RunFileError if the run file cannot be read or the CSV cannot be written.
+void export_csv(const std::string& run_file, const std::string& csv_path);
+
+// XDMF 3 temporal collection, one time step (Time = l) per snapshot: the wire as a Polyline
+// with node attribute `curvature` and, where the snapshot has one, the shell as a triangle
+// mesh. Heavy data stay in the run file, referenced by its path relative to the .xmf file.
+void export_xdmf(const std::string& run_file, const std::string& xmf_path);
+
+}  // namespace wirepack::sweep

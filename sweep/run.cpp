@@ -1,0 +1,197 @@
+#include "sweep/run.hpp"
+
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <memory>
+
+#include "analysis/observables.hpp"
+#include "engine/simulation.hpp"
+#include "sweep/format.hpp"
+
+namespace wirepack::sweep {
+
+namespace {
+
+// Column indices of the series, in recording order.
+enum Column {
+  l_,
+  U_b_hat,
+  U_b,
+  U_t,
+  U_s,
+  U_m,
+  U_sb,
+  E_kin,
+  K,
+  N,
+  S,
+  D,
+  R_t,
+  R_x,
+  R_y,
+  dt,
+  wall_s,
+  steps,
+  kColumns
+};
+
+// Names per Column (DESIGN §4); the array size ties them to the enum.
+constexpr std::array<const char*, kColumns> kNames = {
+    "l", "U_b_hat", "U_b", "U_t", "U_s", "U_m", "U_sb", "E_kin",  "K",
+    "N", "S",       "D",   "R_t", "R_x", "R_y", "dt",   "wall_s", "steps"};
+
+}  // namespace
+
+const std::vector<std::string>& series_names() {
+  static const std::vector<std::string> names(kNames.begin(), kNames.end());
+  return names;
+}
+
+namespace {
+
+class Recorder {
+ public:
+  Recorder(const Scene& scene, RunRecord& record) : scene_(scene), record_(record) {
+    for (const auto& name : series_names()) record_.series.push_back({name, {}});
+  }
+
+  // One row of every series (DESIGN §4) from the current state.
+  void row(const Simulation& sim, double wall) {
+    const SceneParams& p = scene_.engine;
+    const auto x = sim.inside_nodes();
+    const Energies e = sim.energies();
+    const double R = p.R();
+    const auto order = analysis::order_parameter(x);
+    const auto radii = analysis::coil_radii(x, p.wire.radius);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    double v[kColumns];
+    v[l_] = sim.l();
+    v[U_b_hat] = analysis::bending_energy_hat(e.U_b, p.wire.radius, R, p.wire.youngs_modulus);
+    v[U_b] = e.U_b;
+    v[U_t] = e.U_t;
+    v[U_s] = e.U_s;
+    v[U_m] = e.U_m;
+    v[U_sb] = e.U_sb;
+    v[E_kin] = e.E_kin;
+    v[K] = analysis::total_curvature(x);
+    v[N] = sim.wire_contacts();
+    v[S] = order.S;
+    v[D] = order.D;
+    v[R_t] = radii.ok ? radii.R_t / R : nan;
+    v[R_x] = radii.ok ? radii.R_x / R : nan;
+    v[R_y] = radii.ok ? radii.R_y / R : nan;
+    v[dt] = sim.dt();
+    v[wall_s] = wall;
+    v[steps] = static_cast<double>(sim.steps());
+    for (int c = 0; c < kColumns; ++c) record_.series[c].values.push_back(v[c]);
+    last_row_l_ = sim.l();
+  }
+
+  // Wire (inside part), its curvature and the shell mesh at the current state.
+  void snapshot(const Simulation& sim) {
+    Snapshot s;
+    s.l = sim.l();
+    const auto x = sim.inside_nodes();
+    s.wire.reserve(x.size());
+    for (const auto& p : x) s.wire.push_back({p.x(), p.y(), p.z()});
+    s.curvature = analysis::curvatures(x);
+    for (const auto& p : sim.shell_vertices()) s.shell_vertices.push_back({p.x(), p.y(), p.z()});
+    for (const auto& t : sim.shell_triangles()) s.shell_triangles.push_back(t);
+    record_.snapshots.push_back(std::move(s));
+    last_snapshot_l_ = sim.l();
+  }
+
+  double last_row_l() const { return last_row_l_; }
+  double last_snapshot_l() const { return last_snapshot_l_; }
+
+ private:
+  const Scene& scene_;
+  RunRecord& record_;
+  double last_row_l_ = -1;
+  double last_snapshot_l_ = -1;
+};
+
+// `l = 12.3 / 20  wall 0:00:41  ETA 0:00:26`, ETA from the mean rate of l per wall second.
+std::string progress_line(double l, double l_max, double wall, bool done = false) {
+  char buf[64];
+  std::snprintf(buf, sizeof(buf), "l = %.1f / ", l);
+  std::string line = buf + format_number(l_max) + "  wall " + format_duration(wall);
+  if (done) return line;
+  const double eta = l > 0 && wall > 0 ? (l_max - l) / (l / wall) : -1;
+  return line + "  ETA " + format_duration(eta);
+}
+
+}  // namespace
+
+RunOutcome run_scene(const Scene& scene, const std::string& out_path, std::ostream* progress) {
+  using clock = std::chrono::steady_clock;
+  const auto t0 = clock::now();
+  const auto wall = [&] { return std::chrono::duration<double>(clock::now() - t0).count(); };
+  const double every = scene.output.every_l;
+  const double snap_every = scene.output.snapshots_every_l;
+  const double l_max = scene.engine.l_max;
+
+  RunRecord record;
+  record.config = scene.resolved;
+  record.version = build_version();
+  record.git = build_git();
+  record.started = utc_now_iso8601();
+  Recorder rec(scene, record);
+  RunOutcome out;
+
+  std::unique_ptr<Simulation> sim;
+  try {
+    sim = std::make_unique<Simulation>(scene.engine);
+    rec.row(*sim, wall());
+    rec.snapshot(*sim);
+    // Next samples at integer multiples of the intervals (no drift from accumulation).
+    double next_row = every * (std::floor(sim->l() / every) + 1);
+    double next_snap = snap_every * (std::floor(sim->l() / snap_every) + 1);
+    double next_report = 2.0;
+    while (!sim->finished()) {
+      sim->step();
+      const double l = sim->l();
+      if (l >= next_row) {
+        rec.row(*sim, wall());
+        next_row = every * (std::floor(l / every) + 1);
+      }
+      if (l >= next_snap) {
+        rec.snapshot(*sim);
+        next_snap = snap_every * (std::floor(l / snap_every) + 1);
+      }
+      if (progress && wall() >= next_report) {
+        *progress << progress_line(l, l_max, wall()) << std::endl;
+        next_report = wall() + 2.0;
+      }
+    }
+    if (rec.last_row_l() != sim->l()) rec.row(*sim, wall());
+    if (rec.last_snapshot_l() != sim->l()) rec.snapshot(*sim);
+    record.status = RunStatus::Complete;
+  } catch (const std::exception& e) {
+    // The failed state itself is not recorded (it may hold NaN); the series so far are.
+    record.status = RunStatus::Failed;
+    record.failure = e.what();
+    if (record.failure.empty()) record.failure = "unknown error";
+  }
+  record.finished = utc_now_iso8601();
+
+  out.status = record.status;
+  out.failure = record.failure;
+  out.l = sim ? sim->l() : 0.0;
+  out.steps = sim ? sim->steps() : 0;
+  out.wall_s = wall();
+  if (progress) {
+    if (out.status == RunStatus::Complete)
+      *progress << progress_line(out.l, l_max, out.wall_s, true) << "  done, " << out.steps
+                << " steps" << std::endl;
+    else
+      *progress << "run failed at l = " << format_number(out.l) << ": " << out.failure << std::endl;
+  }
+  write_run_file(record, out_path);
+  return out;
+}
+
+}  // namespace wirepack::sweep

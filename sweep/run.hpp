@@ -1,0 +1,33 @@
+#pragma once
+// The run loop (DESIGN §4, §5): one validated scene -> one Simulation -> one run file.
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "sweep/run_file.hpp"
+#include "sweep/scene_config.hpp"
+
+namespace wirepack::sweep {
+
+struct RunOutcome {
+  RunStatus status = RunStatus::Running;  // Complete or Failed once run_scene returns
+  std::string failure;                    // reason of a failed run ("" otherwise)
+  double l = 0;                           // injected length / R reached
+  long steps = 0;                         // accepted steps
+  double wall_s = 0;                      // wall-clock duration [s]
+};
+
+// Names of the recorded series, in column order: l, U_b_hat, U_b, U_t, U_s, U_m, U_sb, E_kin,
+// K, N, S, D, R_t, R_x, R_y, dt, wall_s, steps. Radii are divided by R (NaN when the coil fit
+// fails); energies in J; dt and wall_s in s.
+const std::vector<std::string>& series_names();
+
+// Simulates `scene` to l_max. Records the series at l = 0, every output.every_l and at the end;
+// snapshots at l = 0, every output.snapshots_every_l and at the end. Progress lines go to
+// `progress` (may be null) at most every 2 s of wall time. Any exception from the simulation
+// ends the run as failed: the series so far are still written with status "failed" and the
+// reason. The run file is written once, at the end (write-then-rename); a failure to write it
+// throws RunFileError.
+RunOutcome run_scene(const Scene& scene, const std::string& out_path, std::ostream* progress);
+
+}  // namespace wirepack::sweep

@@ -1,0 +1,70 @@
+#pragma once
+// The run file (DESIGN §5): one HDF5 file per run. Root attributes status, failure, config,
+// version, git, started, finished; /series/<name> 1-D float64 datasets in recording order;
+// /snapshots/<k>/{wire, curvature, shell_vertices, shell_triangles} with attribute l.
+// Written as PATH.part and renamed to PATH once fully written and closed.
+#include <array>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace wirepack::sweep {
+
+// An HDF5 or file-system failure while writing or reading a run file.
+class RunFileError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+enum class RunStatus { Running, Complete, Failed };
+std::string to_string(RunStatus s);                      // "running" | "complete" | "failed"
+RunStatus run_status_from_string(const std::string& s);  // throws RunFileError if unknown
+
+struct Snapshot {
+  double l = 0;                                       // injected length / R
+  std::vector<std::array<double, 3>> wire;            // inside centerline, tip first (n x 3) [m]
+  std::vector<double> curvature;                      // kappa_i at the wire nodes (n) [1/m]
+  std::vector<std::array<double, 3>> shell_vertices;  // (m x 3) [m]; empty for a rigid shell
+  std::vector<std::array<int, 3>> shell_triangles;    // vertex indices (f x 3); empty if rigid
+};
+
+struct Series {
+  std::string name;            // observable name (DESIGN §4), e.g. "U_b_hat"
+  std::vector<double> values;  // one value per recorded row
+};
+
+// Everything a run file holds, in memory.
+struct RunRecord {
+  nlohmann::json config;  // resolved scene (all defaults filled)
+  RunStatus status = RunStatus::Running;
+  std::string failure;  // reason of a failed run, "" otherwise
+  std::string version;  // wirepack version and git hash that produced the file
+  std::string git;
+  std::string started;         // ISO-8601 UTC
+  std::string finished;        // ISO-8601 UTC, "" while running
+  std::vector<Series> series;  // columns in recording order, all of equal length
+  std::vector<Snapshot> snapshots;
+
+  // The series called `name`, or nullptr.
+  const Series* find_series(const std::string& name) const;
+  Series* find_series(const std::string& name);
+};
+
+// The version and git hash of this build (for RunRecord::version, git).
+std::string build_version();
+std::string build_git();
+
+// Serialises every HDF5 call in the process (the HDF5 library is not safe to call from
+// several threads at once). write_run_file and read_run_file take it themselves.
+std::mutex& hdf5_mutex();
+
+// Writes `path + ".part"`, closes it and renames it to `path`. On failure the .part file is
+// removed and RunFileError is thrown; an existing `path` is then left untouched.
+void write_run_file(const RunRecord& record, const std::string& path);
+// Reads a run file written by write_run_file. Throws RunFileError.
+RunRecord read_run_file(const std::string& path);
+
+}  // namespace wirepack::sweep

@@ -1,0 +1,491 @@
+#include "sweep/scene_config.hpp"
+
+#include <cmath>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "sweep/format.hpp"
+#include "sweep/json_file.hpp"
+
+namespace wirepack::sweep {
+
+using json = nlohmann::json;
+using Type = KeySpec::Type;
+using Need = KeySpec::Need;
+using Bound = KeySpec::Bound;
+
+namespace {
+
+double num(const json& v) {
+  return v.get<double>();
+}
+
+}  // namespace
+
+// The scene schema (DESIGN §2). Order: documentation order; /shell is read first anyway.
+const std::vector<KeySpec>& scene_schema() {
+  static const std::vector<KeySpec> table = {
+      {.pointer = "/rho",
+       .type = Type::Number,
+       .need = Need::Required,
+       .min = Bound{2, false},
+       .doc = "R / r: sphere radius over wire radius",
+       .apply = [](Scene& s, const json& v) { s.engine.rho = num(v); }},
+      {.pointer = "/xi",
+       .type = Type::Number,
+       .need = Need::RequiredIfElastic,
+       .min = Bound{1, false},
+       .doc = "R / t: sphere radius over shell thickness (ignored for a rigid shell)",
+       .apply = [](Scene& s, const json& v) { s.engine.xi = num(v); }},
+      {.pointer = "/eps",
+       .type = Type::Number,
+       .need = Need::RequiredIfElastic,
+       .min = Bound{0, false},
+       .doc = "E_w / E_s: wire over shell Young's modulus (ignored for a rigid shell)",
+       .apply = [](Scene& s, const json& v) { s.engine.eps = num(v); }},
+      {.pointer = "/mu_s",
+       .type = Type::Number,
+       .need = Need::Required,
+       .min = Bound{0, true},
+       .doc = "static friction coefficient (wire-wire and wire-shell)",
+       .apply = [](Scene& s, const json& v) { s.engine.mu_s = num(v); }},
+      {.pointer = "/mu_d",
+       .type = Type::Number,
+       .need = Need::Optional,
+       .default_text = "0.9 mu_s",
+       .min = Bound{0, true},
+       .extra_rule = "<= mu_s",
+       .doc = "dynamic (sliding) friction coefficient",
+       .apply = [](Scene& s, const json& v) { s.engine.mu_d = num(v); }},
+      {.pointer = "/l_max",
+       .type = Type::Number,
+       .need = Need::Optional,
+       .fallback = 50.0,
+       .min = Bound{0, false},
+       .doc = "final injected length l = L / R",
+       .apply = [](Scene& s, const json& v) { s.engine.l_max = num(v); }},
+      {.pointer = "/seed",
+       .type = Type::Integer,
+       .need = Need::Optional,
+       .fallback = std::uint64_t{1},
+       .min = Bound{0, true},
+       .doc = "seed of the run's RNG (initial transverse perturbation)",
+       .apply = [](Scene& s, const json& v) { s.engine.seed = v.get<std::uint64_t>(); }},
+      {.pointer = "/shell",
+       .type = Type::Choice,
+       .need = Need::Optional,
+       .fallback = "elastic",
+       .choices = {"elastic", "rigid"},
+       .doc = "elastic shell, or an analytic rigid sphere of radius R",
+       .apply =
+           [](Scene& s, const json& v) {
+             s.engine.shell = v == "rigid" ? ShellKind::Rigid : ShellKind::Elastic;
+           }},
+      {.pointer = "/injection_speed",
+       .type = Type::Number,
+       .need = Need::Optional,
+       .fallback = 0.5,
+       .min = Bound{0, false},
+       .doc = "injection speed v [m/s]",
+       .apply = [](Scene& s, const json& v) { s.engine.injection_speed = num(v); }},
+      {.pointer = "/wire/radius",
+       .type = Type::Number,
+       .need = Need::Optional,
+       .fallback = 0.5e-3,
+       .min = Bound{0, false},
+       .doc = "wire radius r [m]",
+       .apply = [](Scene& s, const json& v) { s.engine.wire.radius = num(v); }},
+      {.pointer = "/wire/youngs_modulus",
+       .type = Type::Number,
+       .need = Need::Optional,
+       .fallback = 1e9,
+       .min = Bound{0, false},
+       .doc = "wire Young's modulus E_w [Pa]",
+       .apply = [](Scene& s, const json& v) { s.engine.wire.youngs_modulus = num(v); }},
+      {.pointer = "/wire/poisson_ratio",
+       .type = Type::Number,
+       .need = Need::Optional,
+       .fallback = 1.0 / 3.0,
+       .default_text = "1/3",
+       .min = Bound{0, true},
+       .max = Bound{0.5, false},
+       .doc = "wire Poisson ratio nu_w [-]",
+       .apply = [](Scene& s, const json& v) { s.engine.wire.poisson_ratio = num(v); }},
+      {.pointer = "/wire/density",
+       .type = Type::Number,
+       .need = Need::Optional,
+       .fallback = 1140.0,
+       .min = Bound{0, false},
+       .doc = "wire density [kg/m^3] (polyamide); masses are then scaled by quasistatic_ratio",
+       .apply = [](Scene& s, const json& v) { s.engine.wire.density = num(v); }},
+      {.pointer = "/numerics/element_length",
+       .type = Type::Number,
+       .need = Need::Optional,
+       .fallback = 0.5e-3,
+       .min = Bound{0, false},
+       .extra_rule = "<= R/4",
+       .doc = "rest length of a wire element [m]",
+       .apply = [](Scene& s, const json& v) { s.engine.numerics.element_length = num(v); }},
+      {.pointer = "/numerics/shell_mesh_size",
+       .type = Type::Number,
+       .need = Need::Optional,
+       .fallback = 1.0e-3,
+       .min = Bound{0, false},
+       .doc = "target shell triangle edge length [m] (elastic shell only)",
+       .apply = [](Scene& s, const json& v) { s.engine.numerics.shell_mesh_size = num(v); }},
+      {.pointer = "/numerics/quasistatic_ratio",
+       .type = Type::Number,
+       .need = Need::Optional,
+       .fallback = 0.01,
+       .min = Bound{0, false},
+       .max = Bound{0.5, true},
+       .doc = "injection speed over the wire's axial wave speed; sets the mass scaling [-]",
+       .apply = [](Scene& s, const json& v) { s.engine.numerics.quasistatic_ratio = num(v); }},
+      {.pointer = "/numerics/tolerance",
+       .type = Type::Number,
+       .need = Need::Optional,
+       .fallback = 1e-4,
+       .min = Bound{0, false},
+       .max = Bound{1, true},
+       .doc = "local position error allowed per step, in units of r [-]",
+       .apply = [](Scene& s, const json& v) { s.engine.numerics.tolerance = num(v); }},
+      {.pointer = "/numerics/damping_ratio",
+       .type = Type::Number,
+       .need = Need::Optional,
+       .fallback = 0.5,
+       .min = Bound{0, true},
+       .max = Bound{1, false},
+       .doc = "viscous damping ratio zeta, subcritical [-]",
+       .apply = [](Scene& s, const json& v) { s.engine.numerics.damping_ratio = num(v); }},
+      {.pointer = "/numerics/twist",
+       .type = Type::Choice,
+       .need = Need::Optional,
+       .fallback = "auto",
+       .choices = {"auto", "on", "off"},
+       .doc = "twist degrees of freedom; auto: on iff mu_s > 0",
+       .apply =
+           [](Scene& s, const json& v) {
+             s.engine.numerics.twist = v == "on"    ? TwistMode::On
+                                       : v == "off" ? TwistMode::Off
+                                                    : TwistMode::Auto;
+           }},
+      {.pointer = "/output/every_l",
+       .type = Type::Number,
+       .need = Need::Optional,
+       .fallback = 0.1,
+       .min = Bound{0, false},
+       .doc = "interval in l between recorded series rows",
+       .apply = [](Scene& s, const json& v) { s.output.every_l = num(v); }},
+      {.pointer = "/output/snapshots_every_l",
+       .type = Type::Number,
+       .need = Need::Optional,
+       .fallback = 5.0,
+       .min = Bound{0, false},
+       .doc = "interval in l between configuration snapshots",
+       .apply = [](Scene& s, const json& v) { s.output.snapshots_every_l = num(v); }},
+  };
+  return table;
+}
+
+std::string KeySpec::type_name() const {
+  switch (type) {
+    case Type::Number:
+      return "number";
+    case Type::Integer:
+      return "integer";
+    case Type::Choice:
+      return "string";
+  }
+  return "?";
+}
+
+std::string KeySpec::range_text() const {
+  std::string out;
+  if (type == Type::Choice) {
+    for (const auto& c : choices) out += (out.empty() ? "\"" : ", \"") + c + "\"";
+  } else if (min && max) {
+    out = std::string(min->inclusive ? "[" : "(") + format_number(min->value) + ", " +
+          format_number(max->value) + (max->inclusive ? "]" : ")");
+  } else if (min) {
+    out = std::string(min->inclusive ? ">= " : "> ") + format_number(min->value);
+  } else if (max) {
+    out = std::string(max->inclusive ? "<= " : "< ") + format_number(max->value);
+  }
+  if (!extra_rule.empty()) out += (out.empty() ? "" : ", ") + extra_rule;
+  return out;
+}
+
+namespace {
+
+// Short description of an offending value for messages.
+std::string describe(const json& v) {
+  if (v.is_object()) return "an object";
+  if (v.is_array()) return "an array";
+  if (v.is_number_float()) return format_number(v.get<double>());
+  std::string s = v.dump();
+  if (s.size() > 40) s = s.substr(0, 37) + "...";
+  return s;
+}
+
+std::vector<std::string> split_pointer(const std::string& pointer) {
+  std::vector<std::string> tokens;
+  std::size_t pos = 1;
+  while (pos <= pointer.size()) {
+    const auto next = pointer.find('/', pos);
+    const auto end = next == std::string::npos ? pointer.size() : next;
+    tokens.push_back(pointer.substr(pos, end - pos));
+    pos = end + 1;
+  }
+  return tokens;
+}
+
+std::string join(const std::set<std::string>& names) {
+  std::string out;
+  for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
+// Valid child keys per object level ("" is the root) and the levels that are groups.
+struct Levels {
+  std::map<std::string, std::set<std::string>> children;
+  std::set<std::string> groups;
+};
+
+const Levels& levels() {
+  static const Levels lv = [] {
+    Levels out;
+    for (const auto& spec : scene_schema()) {
+      const auto tokens = split_pointer(spec.pointer);
+      std::string level;
+      for (std::size_t i = 0; i < tokens.size(); ++i) {
+        out.children[level].insert(tokens[i]);
+        level += "/" + tokens[i];
+        if (i + 1 < tokens.size()) out.groups.insert(level);
+      }
+    }
+    return out;
+  }();
+  return lv;
+}
+
+class Validator {
+ public:
+  explicit Validator(std::string source) : source_(std::move(source)) {}
+
+  void fail(const std::string& pointer, const std::string& rule) {
+    errors_.push_back(source_ + ": " + (pointer.empty() ? "/" : pointer) + ": " + rule);
+  }
+  const std::vector<std::string>& errors() const { return errors_; }
+
+  // Unknown keys and groups that are not objects, recursively.
+  void check_keys(const json& obj, const std::string& level) {
+    const auto& lv = levels();
+    const auto& valid = lv.children.at(level);
+    for (const auto& [key, value] : obj.items()) {
+      const std::string child = pointer_child(level, key);
+      if (!valid.contains(key)) {
+        fail(child, "unknown key; valid keys here: " + join(valid));
+      } else if (lv.groups.contains(child)) {
+        if (value.is_object())
+          check_keys(value, child);
+        else
+          fail(child, "must be an object with keys " + join(lv.children.at(child)) + " (got " +
+                          describe(value) + ")");
+      }
+    }
+  }
+
+  // Checks one present value against its spec; returns the canonical value (numbers as
+  // double, integers as int) or nothing after recording the error.
+  std::optional<json> check_value(const KeySpec& spec, const json& v) {
+    double x = 0;
+    json canonical;
+    switch (spec.type) {
+      case Type::Choice:
+        for (const auto& c : spec.choices)
+          if (v.is_string() && v.get<std::string>() == c) return json(c);
+        fail(spec.pointer, "must be one of " + spec.range_text() + " (got " + describe(v) + ")");
+        return std::nullopt;
+      case Type::Number:
+        if (!v.is_number()) {
+          fail(spec.pointer, "must be a number (got " + describe(v) + ")");
+          return std::nullopt;
+        }
+        x = v.get<double>();
+        if (!std::isfinite(x)) {
+          fail(spec.pointer, "must be a finite number (got " + describe(v) + ")");
+          return std::nullopt;
+        }
+        canonical = x;
+        break;
+      case Type::Integer:
+        if (!v.is_number_integer()) {
+          fail(spec.pointer, "must be an integer (got " + describe(v) + ")");
+          return std::nullopt;
+        }
+        if (v.is_number_unsigned()) {
+          canonical = v.get<std::uint64_t>();
+          x = static_cast<double>(v.get<std::uint64_t>());
+        } else {
+          canonical = v.get<std::int64_t>();
+          x = static_cast<double>(v.get<std::int64_t>());
+        }
+        break;
+    }
+    const bool below =
+        spec.min && (spec.min->inclusive ? x < spec.min->value : x <= spec.min->value);
+    const bool above =
+        spec.max && (spec.max->inclusive ? x > spec.max->value : x >= spec.max->value);
+    if (below || above) {
+      std::string range = spec.range_text();
+      if (!spec.extra_rule.empty())
+        range = range.substr(0, range.size() - spec.extra_rule.size() - 2);
+      fail(spec.pointer, std::string("must be ") + (spec.min && spec.max ? "in " : "") + range +
+                             " (got " + describe(v) + ")");
+      return std::nullopt;
+    }
+    return canonical;
+  }
+
+ private:
+  std::string source_;
+  std::vector<std::string> errors_;
+};
+
+enum class Lookup { Found, Missing, ParentInvalid };
+
+// Finds `pointer` in `j`; a non-object on the way is ParentInvalid (reported by check_keys).
+Lookup lookup(const json& j, const std::string& pointer, const json** out) {
+  const json* node = &j;
+  const auto tokens = split_pointer(pointer);
+  for (std::size_t i = 0; i < tokens.size(); ++i) {
+    if (!node->is_object()) return Lookup::ParentInvalid;
+    const auto it = node->find(tokens[i]);
+    if (it == node->end()) return Lookup::Missing;
+    node = &*it;
+  }
+  *out = node;
+  return Lookup::Found;
+}
+
+}  // namespace
+
+Scene parse_scene(const json& j, const std::string& source) {
+  Validator val(source);
+  if (!j.is_object()) {
+    val.fail("", "a scene must be a JSON object (got " + describe(j) + ")");
+    throw InputError(val.errors());
+  }
+  val.check_keys(j, "");
+  const auto& schema = scene_schema();
+
+  // The shell kind decides whether xi and eps are required; unknown if /shell is invalid.
+  bool shell_known = true, elastic = true;
+  {
+    const json* v = nullptr;
+    if (lookup(j, "/shell", &v) == Lookup::Found) {
+      shell_known = v->is_string() && (*v == "elastic" || *v == "rigid");
+      elastic = shell_known && *v == "elastic";
+    }
+  }
+
+  // Table pass: type, finiteness and range of every key; defaults for missing ones.
+  std::map<std::string, json> values;  // pointer -> canonical valid value
+  for (const auto& spec : schema) {
+    const json* v = nullptr;
+    const Lookup found = lookup(j, spec.pointer, &v);
+    if (found == Lookup::ParentInvalid) continue;
+    if (found == Lookup::Found) {
+      if (auto c = val.check_value(spec, *v)) values[spec.pointer] = *c;
+      continue;
+    }
+    switch (spec.need) {
+      case Need::Required:
+        val.fail(spec.pointer, "required key is missing");
+        break;
+      case Need::RequiredIfElastic:
+        if (shell_known && elastic)
+          val.fail(spec.pointer,
+                   "required when shell is \"elastic\" (may be omitted for \"rigid\")");
+        break;
+      case Need::Optional:
+        if (!spec.fallback.is_null()) values[spec.pointer] = spec.fallback;
+        break;
+    }
+  }
+
+  // Cross-key rules (the table's extra_rule column) and derived defaults.
+  const auto has = [&](const char* p) { return values.contains(p); };
+  const auto get = [&](const char* p) { return values.at(p).get<double>(); };
+  bool mu_d_given = false;
+  {
+    const json* v = nullptr;
+    mu_d_given = lookup(j, "/mu_d", &v) == Lookup::Found;
+  }
+  if (has("/mu_s") && !mu_d_given) values["/mu_d"] = 0.9 * get("/mu_s");
+  if (has("/mu_s") && has("/mu_d") && get("/mu_d") > get("/mu_s"))
+    val.fail("/mu_d", "must be <= mu_s = " + format_number(get("/mu_s")) + " (got " +
+                          format_number(get("/mu_d")) + ")");
+  if (has("/rho") && has("/wire/radius") && has("/numerics/element_length")) {
+    const double R = get("/rho") * get("/wire/radius");
+    const double ell = get("/numerics/element_length");
+    if (ell > R / 4)
+      val.fail("/numerics/element_length",
+               "must be <= R/4 = " + format_number(R / 4) + " m with R = rho * wire/radius = " +
+                   format_number(R) + " m (got " + format_number(ell) + ")");
+  }
+
+  if (!val.errors().empty()) throw InputError(val.errors());
+
+  Scene scene;
+  scene.resolved = json::object();
+  for (const auto& spec : schema) {
+    const auto it = values.find(spec.pointer);
+    if (it == values.end()) continue;  // xi, eps omitted for a rigid shell
+    spec.apply(scene, it->second);
+    scene.resolved[json::json_pointer(spec.pointer)] = it->second;
+  }
+  return scene;
+}
+
+Scene load_scene(const std::string& path) {
+  std::vector<std::string> errors;  // duplicate keys, reported with the schema's findings
+  const json j = load_json_file(path, &errors);
+  try {
+    Scene scene = parse_scene(j, path);
+    if (errors.empty()) return scene;
+  } catch (const InputError& e) {
+    errors.insert(errors.end(), e.messages().begin(), e.messages().end());
+  }
+  throw InputError(errors);
+}
+
+std::string schema_markdown() {
+  std::ostringstream out;
+  out << "| pointer | type | default | range | doc |\n";
+  out << "| --- | --- | --- | --- | --- |\n";
+  for (const auto& spec : scene_schema()) {
+    std::string def = spec.default_text;
+    if (def.empty()) {
+      if (spec.need == Need::Required)
+        def = "required";
+      else if (spec.need == Need::RequiredIfElastic)
+        def = "required if shell is \"elastic\"";
+      else if (spec.fallback.is_number_float())
+        def = format_number(spec.fallback.get<double>());
+      else
+        def = spec.fallback.dump();
+    }
+    out << "| `" << spec.pointer << "` | " << spec.type_name() << " | " << def << " | "
+        << spec.range_text() << " | " << spec.doc << " |\n";
+  }
+  return out.str();
+}
+
+const nlohmann::json& default_scene_json() {
+  static const nlohmann::json j = {{"rho", 20}, {"mu_s", 0}, {"shell", "rigid"}, {"l_max", 20}};
+  return j;
+}
+
+}  // namespace wirepack::sweep

@@ -1,0 +1,69 @@
+#pragma once
+// Strict scene config (DESIGN §2, STYLE §8): one table of (JSON pointer, type, default,
+// range, doc) drives validation, default filling, `wirepack validate` and the schema in the
+// README. Errors are collected and thrown together as one InputError.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "engine/params.hpp"
+#include "sweep/errors.hpp"
+
+namespace wirepack::sweep {
+
+// What the run loop records, in units of l = L / R.
+struct OutputParams {
+  double every_l = 0.1;            // series sampling interval [-]
+  double snapshots_every_l = 5.0;  // snapshot interval [-]
+};
+
+struct Scene {
+  SceneParams engine;       // what the engine sees
+  OutputParams output;      // what the run loop records
+  nlohmann::json resolved;  // the validated input with every default filled (sorted keys)
+};
+
+// One row of the schema table.
+struct KeySpec {
+  enum class Type { Number, Integer, Choice };
+  enum class Need { Optional, Required, RequiredIfElastic };
+  struct Bound {
+    double value;
+    bool inclusive;
+  };
+  std::string pointer;  // JSON pointer, e.g. "/wire/radius"
+  Type type;
+  Need need;
+  nlohmann::json fallback = nullptr;  // default when optional; null: derived (default_text)
+  std::string default_text = {};      // the default as the schema shows it, e.g. "0.9 mu_s"
+  std::optional<Bound> min = {};      // numeric range (Number, Integer)
+  std::optional<Bound> max = {};
+  std::vector<std::string> choices = {};  // allowed strings (Choice)
+  std::string extra_rule = {};            // cross-key rule, checked after the table, e.g. "<= mu_s"
+  std::string doc = {};
+  // Copies a validated value into the Scene.
+  void (*apply)(Scene&, const nlohmann::json&);
+
+  std::string type_name() const;   // "number", "integer", "string"
+  std::string range_text() const;  // e.g. "(0, 0.5]", "> 2", "\"auto\" | \"on\" | \"off\""
+};
+
+// The scene schema, in documentation order.
+const std::vector<KeySpec>& scene_schema();
+
+// Validates a parsed scene; `source` names it in messages (`SOURCE: /pointer: rule`).
+// Throws InputError listing every problem found.
+Scene parse_scene(const nlohmann::json& j, const std::string& source);
+// Reads, parses (strictly, see json_file.hpp) and validates a scene file.
+Scene load_scene(const std::string& path);
+
+// The embedded default scene of `wirepack run` without a scene file (the same as
+// scenes/rigid_default.json): a rigid sphere, rho = 20, mu_s = 0, to l = 20.
+const nlohmann::json& default_scene_json();
+
+// The schema as a Markdown table: pointer | type | default | range | doc.
+std::string schema_markdown();
+
+}  // namespace wirepack::sweep

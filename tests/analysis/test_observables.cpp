@@ -1,0 +1,261 @@
+// Tests for the centerline observables of DESIGN §4: Voronoi lengths, discrete curvature, total
+// curvature K (with its O(1/n^2) convergence on a circle), coil normal and winding axis, the order
+// parameter S, D on coils, spirals, a figure-eight, helices and straight wires, invariance under
+// rigid motions, degenerate inputs, and the scaled bending energy.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "analysis/observables.hpp"
+
+namespace wirepack::analysis {
+namespace {
+
+using std::numbers::pi;
+
+// Closed circle of radius a in the xy plane as an open chain of n + 2 nodes: nodes 0 and n
+// coincide and node n + 1 repeats node 1, so nodes 1..n are the n interior nodes of one full turn,
+// each turning by 2 pi / n. sense = +1 counterclockwise seen from +z, -1 clockwise.
+std::vector<Vec3> circle(double a, int n, double sense = 1) {
+  std::vector<Vec3> x;
+  for (int j = 0; j <= n + 1; ++j) {
+    const double t = sense * 2 * pi * j / n;
+    x.emplace_back(a * std::cos(t), a * std::sin(t), 0);
+  }
+  return x;
+}
+
+// Helix about z: radius a, rise `pitch` per turn, `turns` turns, m nodes per turn.
+std::vector<Vec3> helix(double a, double pitch, int turns, int m) {
+  std::vector<Vec3> x;
+  for (int j = 0; j <= turns * m; ++j) {
+    const double t = 2 * pi * j / m;
+    x.emplace_back(a * std::cos(t), a * std::sin(t), pitch * t / (2 * pi));
+  }
+  return x;
+}
+
+Eigen::Matrix3d some_rotation() {
+  return (Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()) *
+          Eigen::AngleAxisd(-1.9, Vec3(-2, 0.5, 1).normalized()))
+      .toRotationMatrix();
+}
+
+// ----------------------------------------------------------------------------------------------
+// Voronoi lengths, curvature, total curvature
+
+TEST(VoronoiLengths, StraightLineWithUnevenSpacing) {
+  const std::vector<Vec3> x{{0, 0, 0}, {1, 0, 0}, {3, 0, 0}, {6, 0, 0}};
+  const std::vector<double> ell = voronoi_lengths(x);
+  ASSERT_EQ(ell.size(), 4u);
+  EXPECT_DOUBLE_EQ(ell[0], 0.5);  // half of the first edge only
+  EXPECT_DOUBLE_EQ(ell[1], 1.5);
+  EXPECT_DOUBLE_EQ(ell[2], 2.5);
+  EXPECT_DOUBLE_EQ(ell[3], 1.5);
+  // Any direction: ell sums to the length.
+  std::vector<Vec3> y;
+  for (const Vec3& p : x) y.push_back(p.x() * Vec3(1, -2, 2) / 3);
+  double L = 0;
+  for (double e : voronoi_lengths(y)) L += e;
+  EXPECT_NEAR(L, 6, 1e-14);
+}
+
+TEST(Curvatures, CircleOfRadiusA) {
+  // Exactly kappa = 2 tan(phi/2) / (2 a sin(phi/2)) = 1 / (a cos(phi/2)) with phi = 2 pi / n:
+  // 1/a up to the relative error phi^2 / 8 (2.5e-5 at n = 200).
+  const double a = 0.37;
+  const int n = 200;
+  const auto x = circle(a, n);
+  const std::vector<double> kappa = curvatures(x);
+  ASSERT_EQ(kappa.size(), x.size());
+  EXPECT_EQ(kappa.front(), 0.0);
+  EXPECT_EQ(kappa.back(), 0.0);
+  const double exact = 1 / (a * std::cos(pi / n));
+  for (int i = 1; i <= n; ++i) {
+    EXPECT_NEAR(kappa[i], exact, 1e-12 * exact);
+    EXPECT_NEAR(kappa[i] * a, 1, std::pow(2 * pi / n, 2) / 8 * 1.01);
+  }
+}
+
+TEST(Curvatures, NearReversalIsAccurateAndExactReversalFinite) {
+  // phi = pi - delta: tan(phi / 2) = 1 / tan(delta / 2), to full relative precision although
+  // 1 + cos(phi) ~ delta^2 / 2 cancels.
+  for (double delta : {1e-2, 1e-5, 1e-7}) {
+    const std::vector<Vec3> x{{0, 0, 0}, {1, 0, 0}, {1 - std::cos(delta), std::sin(delta), 0}};
+    const double kappa = curvatures(x)[1];  // ell_1 = 1
+    EXPECT_NEAR(kappa, 2 / std::tan(delta / 2), 1e-9 * kappa) << "delta " << delta;
+  }
+  const std::vector<Vec3> hairpin{{0, 0, 0}, {1, 0, 0}, {0, 0, 0}};
+  EXPECT_TRUE(std::isfinite(curvatures(hairpin)[1]));
+  EXPECT_TRUE(std::isfinite(total_curvature(hairpin)));
+}
+
+TEST(TotalCurvature, CircleConvergesAtSecondOrder) {
+  // K_n = 2 n tan(pi / n) = 2 pi (1 + pi^2 / (3 n^2) + O(n^-4)): each doubling of n divides the
+  // error by 4 (within 1 % at these n, the O(n^-4) term being ~pi^2 / (5 n^2) relative to it).
+  double err_prev = 0;
+  for (int n : {32, 64, 128}) {
+    const double K = total_curvature(circle(2.5, n));
+    const double err = K - 2 * pi;
+    EXPECT_NEAR(K, 2 * n * std::tan(pi / n), 1e-12);
+    EXPECT_GT(err, 0);
+    EXPECT_NEAR(err, 2 * std::pow(pi, 3) / (3.0 * n * n), 0.01 * err);
+    if (err_prev > 0) {
+      EXPECT_NEAR(err_prev / err, 4, 0.04);
+    }
+    err_prev = err;
+  }
+}
+
+TEST(TotalCurvature, StraightLineIsZero) {
+  std::vector<Vec3> x;
+  for (int j = 0; j < 50; ++j) x.push_back((j + 0.1 * (j % 3)) * Vec3(0.3, -0.5, 0.7));
+  EXPECT_NEAR(total_curvature(x), 0, 1e-12);
+}
+
+// ----------------------------------------------------------------------------------------------
+// Axes
+
+TEST(CoilNormal, PlanarCoilInXyPlaneIsPlusZ) {
+  // Sign convention: the largest-magnitude component is positive, for either sense of rotation.
+  for (double sense : {1.0, -1.0}) {
+    const Vec3 n = coil_normal(circle(1.3, 100, sense));
+    EXPECT_NEAR(n.z(), 1, 1e-12);
+    const Vec3 w = turning_axis(circle(1.3, 100, sense));
+    EXPECT_NEAR(w.z(), 1, 1e-12);
+  }
+}
+
+TEST(CoilNormal, TallHelixTipsIntoThePlaneWhileWindingAxisStays) {
+  // Documented limitation of the DESIGN §4 axis: a helix taller than wide (height^2 / 12 >
+  // a^2 / 2) has its smallest gyration eigenvalue in the plane, so n is in-plane and D ~ 1 (the
+  // sign of n . b_i alternates every half turn). The winding axis is z whatever the height.
+  // Height 20, a = 1; n leans out of the plane by ~cov(y, z) / var(z) = 0.005 only.
+  const auto x = helix(1.0, 1.0, 20, 64);
+  EXPECT_LT(std::abs(coil_normal(x).z()), 0.02);
+  EXPECT_GT(order_parameter(x).D, 0.9);
+  EXPECT_NEAR(turning_axis(x).z(), 1, 1e-6);
+}
+
+// ----------------------------------------------------------------------------------------------
+// Order parameter S, D
+
+TEST(OrderParameter, PlanarCircleIsOrdered) {
+  for (double sense : {1.0, -1.0}) {
+    const Order o = order_parameter(circle(0.8, 120, sense));
+    EXPECT_DOUBLE_EQ(o.S, sense);  // n = +z: counterclockwise S = +1, clockwise S = -1
+    EXPECT_DOUBLE_EQ(o.D, 0);
+    EXPECT_NEAR(o.n.z(), 1, 1e-12);
+  }
+}
+
+TEST(OrderParameter, ArchimedeanSpiralIsOrdered) {
+  // rho = b theta over 6 turns, about constant arclength spacing: one sense of turning throughout.
+  std::vector<Vec3> x;
+  const double b = 0.05;
+  for (double t = 2 * pi; t < 14 * pi; t += 0.05 / (b * t)) {
+    x.emplace_back(b * t * std::cos(t), b * t * std::sin(t), 0);
+  }
+  const Order o = order_parameter(x);
+  EXPECT_DOUBLE_EQ(o.D, 0);
+  EXPECT_DOUBLE_EQ(std::abs(o.S), 1);
+}
+
+TEST(OrderParameter, FigureEightIsDisordered) {
+  // Lemniscate of Gerono (cos t, sin t cos t, 0), n nodes over one closed loop. t -> t + pi
+  // mirrors x -> -x, which maps each lobe onto the other with the opposite sense, so left and
+  // right turning balance: S = 0 up to the two inflection nodes at the crossing and the
+  // non-uniform ell of the sampling, |S| <= 4 / n here.
+  const int n = 2000;
+  std::vector<Vec3> x;
+  for (int j = 0; j <= n + 1; ++j) {
+    const double t = 2 * pi * (j + 0.25) / n;
+    x.emplace_back(std::cos(t), std::sin(t) * std::cos(t), 0);
+  }
+  const Order o = order_parameter(x);
+  EXPECT_NEAR(o.n.z(), 1, 1e-12);
+  EXPECT_LT(std::abs(o.S), 4.0 / n);
+  EXPECT_GT(o.D, 1 - 4.0 / n);
+}
+
+TEST(OrderParameter, FlatHelixWithManyTurnsIsOrdered) {
+  // 30 turns of radius 1 rising 0.01 per turn (height 0.3): a tight coil, n = axis up to a lean
+  // of cov(y, z) / var(y) ~ 0.0032, and every node turns the same way about it.
+  const auto x = helix(1.0, 0.01, 30, 48);
+  const Order o = order_parameter(x);
+  EXPECT_GT(std::abs(o.n.z()), 0.9999);
+  EXPECT_LT(o.D, 1e-12);
+}
+
+TEST(OrderParameter, StraightLineHasNoSense) {
+  // Documented value: a straight wire never turns (round-off turning |t0 x t1| <= 1e-12 counts as
+  // zero), so S = 0 and D = 1.
+  std::vector<Vec3> x;
+  for (int j = 0; j < 40; ++j) x.push_back(Vec3(0.1, 0.2, -0.3) + (j * j * 0.01) * Vec3(1, 2, 3));
+  const Order o = order_parameter(x);
+  EXPECT_EQ(o.S, 0.0);
+  EXPECT_EQ(o.D, 1.0);
+}
+
+TEST(OrderParameter, InvariantUnderRigidMotion) {
+  // A wavy, slightly non-planar coil rho(t) = 1 + 0.5 sin(4.3 t) whose in-plane curvature
+  // changes sign near the minima of rho: both senses of turning, 0 < D < 1. D must not change
+  // under rotation plus translation (S may flip sign with the axis convention).
+  std::vector<Vec3> x;
+  for (int j = 0; j < 3000; ++j) {
+    const double t = 0.01 * j, rho = 1 + 0.5 * std::sin(4.3 * t);
+    x.emplace_back(rho * std::cos(t), rho * std::sin(t), 0.2 * std::sin(0.37 * t));
+  }
+  const Order o = order_parameter(x);
+  ASSERT_GT(o.D, 0.05);
+  ASSERT_LT(o.D, 0.95);
+  const Eigen::Matrix3d Q = some_rotation();
+  const Vec3 shift(3.0, -7.5, 12.25);
+  std::vector<Vec3> y;
+  for (const Vec3& p : x) y.push_back(Q * p + shift);
+  const Order oy = order_parameter(y);
+  EXPECT_NEAR(oy.D, o.D, 1e-9);
+  EXPECT_NEAR(std::abs(oy.n.dot(Q * o.n)), 1, 1e-9);
+  EXPECT_NEAR(total_curvature(y), total_curvature(x), 1e-9 * total_curvature(x));
+}
+
+// ----------------------------------------------------------------------------------------------
+// Degenerate inputs and the scaled bending energy
+
+TEST(Observables, EmptyOneAndTwoNodeInputsGiveDocumentedZeros) {
+  const std::vector<Vec3> none;
+  const std::vector<Vec3> one{Vec3(1, 2, 3)};
+  const std::vector<Vec3> two{Vec3(1, 2, 3), Vec3(2, 2, 3)};
+  const std::vector<Vec3> same{Vec3(1, 1, 1), Vec3(1, 1, 1), Vec3(1, 1, 1)};
+  EXPECT_TRUE(voronoi_lengths(none).empty());
+  EXPECT_TRUE(curvatures(none).empty());
+  EXPECT_EQ(voronoi_lengths(one), std::vector<double>{0.0});
+  EXPECT_EQ(curvatures(one), std::vector<double>{0.0});
+  EXPECT_EQ(curvatures(two), (std::vector<double>{0.0, 0.0}));
+  EXPECT_EQ(curvatures(same), (std::vector<double>{0.0, 0.0, 0.0}));
+  for (const auto* x : {&none, &one, &two, &same}) {
+    EXPECT_EQ(total_curvature(*x), 0.0);
+    const Order o = order_parameter(*x);
+    EXPECT_EQ(o.S, 0.0);
+    EXPECT_EQ(o.D, 1.0);
+    EXPECT_TRUE(coil_normal(*x).allFinite());
+    EXPECT_TRUE(turning_axis(*x).allFinite());
+    EXPECT_FALSE(coil_radii(*x, 0.01).ok);
+  }
+  EXPECT_EQ(coil_normal(none), Vec3::UnitZ());
+}
+
+TEST(BendingEnergyHat, Definition) {
+  // U_b_hat = U_b r^2 / (R E_w I) with I = pi r^4 / 4: U_b = R E_w I / r^2 gives exactly 1, and
+  // a ring of radius R (U_b = pi E_w I / R) gives pi r^2 / R^2.
+  const double r = 5e-4, R = 0.02, E_w = 2e11, I = pi * std::pow(r, 4) / 4;
+  EXPECT_NEAR(bending_energy_hat(R * E_w * I / (r * r), r, R, E_w), 1, 1e-14);
+  EXPECT_NEAR(bending_energy_hat(pi * E_w * I / R, r, R, E_w), pi * r * r / (R * R), 1e-16);
+}
+
+}  // namespace
+}  // namespace wirepack::analysis

@@ -1,0 +1,182 @@
+// The wirepack executable end to end (DESIGN §6): exit codes, messages, nothing written on
+// bad input, a short real run and its export.
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "sweep/run_file.hpp"
+#include "sweep/temp_dir.hpp"
+
+namespace wirepack {
+namespace {
+
+namespace fs = std::filesystem;
+using wirepack::testing::read_text;
+using wirepack::testing::TempDir;
+
+struct Result {
+  int code = -1;
+  std::string out, err;
+};
+
+// Runs `wirepack ARGS` with `dir` as working directory; output is captured elsewhere.
+Result wirepack(const TempDir& dir, const std::string& args) {
+  TempDir logs;
+  const std::string cmd = "cd '" + dir.path().string() + "' && '" WIREPACK_BINARY "' " + args +
+                          " >'" + (logs / "out") + "' 2>'" + (logs / "err") + "'";
+  const int status = std::system(cmd.c_str());
+  Result r;
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = read_text(logs / "out");
+  r.err = read_text(logs / "err");
+  return r;
+}
+
+struct BadScene {
+  const char* name;
+  const char* text;
+  const char* key;  // what stderr must name
+};
+
+const std::vector<BadScene>& bad_scenes() {
+  static const std::vector<BadScene> cases = {
+      {"unknown_top", R"({"rho": 20, "mu_s": 0, "shell": "rigid", "bogus": 1})", "/bogus"},
+      {"unknown_nested", R"({"rho": 20, "mu_s": 0, "shell": "rigid", "wire": {"diam": 1}})",
+       "/wire/diam"},
+      {"wrong_type", R"({"rho": "20", "mu_s": 0, "shell": "rigid"})", "/rho"},
+      {"overflow", R"({"rho": 20, "xi": 10, "eps": 1e999, "mu_s": 0})", "/eps"},
+      {"negative_length",
+       R"({"rho": 20, "mu_s": 0, "shell": "rigid", "numerics": {"element_length": -1e-3}})",
+       "/numerics/element_length"},
+      {"poisson", R"({"rho": 20, "mu_s": 0, "shell": "rigid", "wire": {"poisson_ratio": 0.7}})",
+       "/wire/poisson_ratio"},
+      {"mu_d_above_mu_s", R"({"rho": 20, "mu_s": 0.3, "mu_d": 0.4, "shell": "rigid"})", "/mu_d"},
+      {"missing_rho", R"({"mu_s": 0, "shell": "rigid"})", "/rho"},
+      {"missing_xi", R"({"rho": 20, "eps": 1000, "mu_s": 0})", "/xi"},
+      {"seed_float", R"({"rho": 20, "mu_s": 0, "shell": "rigid", "seed": 1.5})", "/seed"},
+      {"twist_choice",
+       R"({"rho": 20, "mu_s": 0, "shell": "rigid", "numerics": {"twist": "sometimes"}})",
+       "/numerics/twist"},
+      {"not_object", R"([{"rho": 20}])", "must be a JSON object"},
+      {"parse_error", "{\"rho\": 20,\n \"mu_s\": }", "line 2, column"},
+  };
+  return cases;
+}
+
+TEST(Cli, BadScenesExit2AndWriteNothing) {
+  for (const auto& c : bad_scenes()) {
+    SCOPED_TRACE(c.name);
+    TempDir dir;
+    const std::string file = std::string(c.name) + ".json";
+    dir.write(file, c.text);
+    for (const std::string& cmd : {"validate " + file, "run " + file + " --out x.h5"}) {
+      SCOPED_TRACE(cmd);
+      const Result r = wirepack(dir, cmd);
+      EXPECT_EQ(r.code, 2) << r.err;
+      EXPECT_NE(r.err.find(file + ": "), std::string::npos) << r.err;
+      EXPECT_NE(r.err.find(c.key), std::string::npos) << r.err;
+      EXPECT_EQ(r.out, "");
+      EXPECT_FALSE(fs::exists(dir / "x.h5"));
+      EXPECT_FALSE(fs::exists(dir / "x.h5.part"));
+    }
+  }
+}
+
+TEST(Cli, ValidatePrintsResolvedScene) {
+  TempDir dir;
+  dir.write("s.json", R"({"rho": 20, "mu_s": 0, "shell": "rigid"})");
+  const Result r = wirepack(dir, "validate s.json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["shell"], "rigid");
+  EXPECT_EQ(j["l_max"], 50.0);
+  EXPECT_EQ(j["/numerics/element_length"_json_pointer], 0.5e-3);
+  EXPECT_FALSE(j.contains("xi"));
+
+  for (const char* scene : {"rigid_default.json", "elastic_example.json"}) {
+    const Result s =
+        wirepack(dir, std::string("validate '") + WIREPACK_SOURCE_DIR "/scenes/" + scene + "'");
+    EXPECT_EQ(s.code, 0) << scene << ": " << s.err;
+  }
+}
+
+TEST(Cli, UsageErrors) {
+  TempDir dir;
+  dir.write("s.json", R"({"rho": 20, "mu_s": 0, "shell": "rigid"})");
+  EXPECT_EQ(wirepack(dir, "").code, 2);
+  EXPECT_EQ(wirepack(dir, "frobnicate").code, 2);
+  EXPECT_EQ(wirepack(dir, "run s.json").code, 2);  // --out is required
+  EXPECT_EQ(wirepack(dir, "validate").code, 2);
+  EXPECT_EQ(wirepack(dir, "validate missing.json").code, 2);
+  EXPECT_EQ(wirepack(dir, "export missing.h5 --csv x.csv").code, 2);
+  EXPECT_EQ(wirepack(dir, "export missing.h5").code, 2);  // neither --csv nor --xdmf
+  EXPECT_EQ(wirepack(dir, "--help").code, 0);
+  // An output directory that cannot be created (its parent is a file) is refused before any
+  // work.
+  const Result r = wirepack(dir, "run s.json --out s.json/x.h5");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("s.json/x.h5"), std::string::npos) << r.err;
+  // A bad scene with a missing output directory creates nothing.
+  dir.write("bad.json", R"({"rho": -1, "mu_s": 0, "shell": "rigid"})");
+  EXPECT_EQ(wirepack(dir, "run bad.json --out nowhere/x.h5").code, 2);
+  EXPECT_FALSE(fs::exists(dir / "nowhere"));
+}
+
+TEST(Cli, EmbeddedDefaultSceneValidatesAndCreatesTheOutputDirectory) {
+  TempDir dir;
+  // The embedded default is the scene of scenes/rigid_default.json.
+  dir.write("l1.json", R"({"rho": 20, "mu_s": 0, "shell": "rigid", "l_max": 0.5})");
+  const Result r = wirepack(dir, "run l1.json --out runs/sub/x.h5");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(dir / "runs/sub/x.h5"));
+}
+
+TEST(Cli, Schema) {
+  TempDir dir;
+  const Result r = wirepack(dir, "schema");
+  ASSERT_EQ(r.code, 0);
+  EXPECT_NE(r.out.find("| `/rho` | number | required | > 2 |"), std::string::npos) << r.out;
+}
+
+TEST(Cli, ShortRunAndExport) {
+  TempDir dir;
+  dir.write("s.json", R"({"rho": 20, "mu_s": 0, "shell": "rigid", "l_max": 1,
+                          "numerics": {"element_length": 1e-3}})");
+  const Result r = wirepack(dir, "run s.json --out run.h5");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.out, "run.h5\n");
+  EXPECT_FALSE(fs::exists(dir / "run.h5.part"));
+  const auto rec = sweep::read_run_file(dir / "run.h5");
+  EXPECT_EQ(rec.status, sweep::RunStatus::Complete);
+  EXPECT_GE(rec.find_series("l")->values.back(), 1.0);
+
+  const Result e = wirepack(dir, "export run.h5 --csv run.csv --xdmf run.xmf");
+  ASSERT_EQ(e.code, 0) << e.err;
+  const std::string csv = read_text(dir / "run.csv");
+  EXPECT_EQ(
+      csv.rfind("l,U_b_hat,U_b,U_t,U_s,U_m,U_sb,E_kin,K,N,S,D,R_t,R_x,R_y,dt,wall_s,steps\n", 0),
+      0u);
+  EXPECT_NE(read_text(dir / "run.xmf").find("run.h5:/snapshots/"), std::string::npos);
+}
+
+TEST(Cli, FailedRunExit1) {
+  TempDir dir;
+  // Forces overflow a double, so the engine stops with a non-finite state.
+  dir.write("s.json", R"({"rho": 20, "mu_s": 0, "shell": "rigid", "l_max": 1,
+                          "wire": {"youngs_modulus": 1e300}})");
+  const Result r = wirepack(dir, "run s.json --out run.h5");
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_NE(r.err.find("run failed"), std::string::npos) << r.err;
+  const auto rec = sweep::read_run_file(dir / "run.h5");
+  EXPECT_EQ(rec.status, sweep::RunStatus::Failed);
+  EXPECT_FALSE(rec.failure.empty());
+}
+
+}  // namespace
+}  // namespace wirepack

@@ -1,0 +1,100 @@
+// CSV and XDMF export of a run file (DESIGN §5).
+#include "sweep/export.hpp"
+
+#include <filesystem>
+#include <regex>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "sweep/run_file.hpp"
+#include "sweep/temp_dir.hpp"
+
+namespace wirepack::sweep {
+namespace {
+
+namespace fs = std::filesystem;
+using wirepack::testing::read_text;
+using wirepack::testing::TempDir;
+
+RunRecord record(bool shell) {
+  RunRecord r;
+  r.config = {{"rho", 20.0}};
+  r.status = RunStatus::Complete;
+  r.series = {{"l", {0.0, 0.1, 0.2}}, {"K", {0.0, 1.5, std::nan("")}}, {"N", {0, 1, 2}}};
+  for (int k = 0; k < 3; ++k) {
+    Snapshot s;
+    s.l = 2.5 * k;
+    for (int i = 0; i < 3 + k; ++i) s.wire.push_back({1e-3 * i, 0, 0});
+    s.curvature.assign(s.wire.size(), 1.0);
+    if (shell) {
+      s.shell_vertices = {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}};
+      s.shell_triangles = {{0, 1, 2}};
+    }
+    r.snapshots.push_back(s);
+  }
+  return r;
+}
+
+std::size_t count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
+  return n;
+}
+
+TEST(Export, CsvHeaderAndValues) {
+  TempDir dir;
+  write_run_file(record(false), dir / "run.h5");
+  export_csv(dir / "run.h5", dir / "run.csv");
+  EXPECT_EQ(read_text(dir / "run.csv"), "l,K,N\n0,0,0\n0.1,1.5,1\n0.2,nan,2\n");
+  EXPECT_FALSE(fs::exists(dir / "run.csv.tmp"));
+}
+
+TEST(Export, XdmfWireOnly) {
+  TempDir dir;
+  write_run_file(record(false), dir / "run.h5");
+  fs::create_directory(dir.path() / "view");
+  export_xdmf(dir / "run.h5", dir / "view/run.xmf");
+  const std::string x = read_text(dir / "view/run.xmf");
+  EXPECT_EQ(x.rfind("<?xml", 0), 0u);
+  EXPECT_NE(x.find("<Xdmf Version=\"3.0\""), std::string::npos);
+  EXPECT_NE(x.find("CollectionType=\"Temporal\""), std::string::npos);
+  EXPECT_EQ(count(x, "<Time "), 3u);  // one time step per snapshot
+  EXPECT_EQ(count(x, "<Grid Name=\"snapshot_"), 3u);
+  EXPECT_EQ(count(x, "TopologyType=\"Polyline\""), 3u);
+  EXPECT_EQ(count(x, "TopologyType=\"Triangle\""), 0u);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NE(x.find("../run.h5:/snapshots/" + std::to_string(k) + "/wire<"), std::string::npos);
+    EXPECT_NE(x.find("../run.h5:/snapshots/" + std::to_string(k) + "/curvature<"),
+              std::string::npos);
+  }
+  EXPECT_NE(x.find("<Time Value=\"5\" />"), std::string::npos);
+  // Snapshot 2 has 5 nodes: 4 segments with inline connectivity.
+  EXPECT_NE(x.find("NumberOfElements=\"4\" NodesPerElement=\"2\""), std::string::npos);
+  EXPECT_NE(x.find(">0 1 1 2 2 3 3 4</DataItem>"), std::string::npos);
+  // Balanced elements.
+  EXPECT_EQ(count(x, "<Grid "), count(x, "</Grid>"));
+  EXPECT_EQ(count(x, "<DataItem "), count(x, "</DataItem>"));
+  EXPECT_NE(x.find("</Xdmf>"), std::string::npos);
+}
+
+TEST(Export, XdmfWithShell) {
+  TempDir dir;
+  write_run_file(record(true), dir / "run.h5");
+  export_xdmf(dir / "run.h5", dir / "run.xmf");
+  const std::string x = read_text(dir / "run.xmf");
+  EXPECT_EQ(count(x, "<Time "), 3u);
+  EXPECT_EQ(count(x, "TopologyType=\"Triangle\""), 3u);
+  EXPECT_NE(x.find(">run.h5:/snapshots/1/shell_triangles<"), std::string::npos);
+  EXPECT_NE(x.find(">run.h5:/snapshots/1/shell_vertices<"), std::string::npos);
+  EXPECT_EQ(count(x, "<Grid "), count(x, "</Grid>"));
+}
+
+TEST(Export, MissingRunFileThrows) {
+  TempDir dir;
+  EXPECT_THROW(export_csv(dir / "none.h5", dir / "x.csv"), RunFileError);
+  EXPECT_FALSE(fs::exists(dir / "x.csv"));
+}
+
+}  // namespace
+}  // namespace wirepack::sweep
