@@ -16,8 +16,8 @@ namespace {
 // value is infinite; a finite cap keeps K and kappa finite for such degenerate input.
 constexpr double kTanHalfMax = 1e8;
 
-// Turning at a node below this |t0 x t1| (unit tangents, i.e. sin phi) is round-off of a straight
-// wire (a few ulp of 1), not a sense of rotation: it counts as "exact zero" in S.
+// A turning sine below this (n . (t0 x t1) or |t0 x t1| of unit vectors) is round-off of a
+// straight wire (a few ulp of 1), not a sense of rotation: it counts as exact zero.
 constexpr double kZeroTurn = 1e-12;
 
 // Unit tangent of edge e = (x_e, x_{e+1}); false for a zero-length edge.

@@ -49,8 +49,19 @@ void SelfContactTerm::rebuild(const RodState& s) {
   }
 }
 
+// A closest point at the far end of an edge is the same point as the start of the next edge of
+// that polyline: counting it on both would double the force where a wire crosses a joint of
+// the other (a bump at every element boundary). The pair with the next edge owns it, unless
+// that pair is excluded as neighbours along the wire.
+bool SelfContactTerm::shared_endpoint(const SegmentClosest& c, int a, int b, int ne) const {
+  if (c.t == 1.0 && b + 1 < ne) return true;
+  if (c.s == 1.0 && a + 1 < ne && b - (a + 1) > exclude_) return true;
+  return false;
+}
+
 double SelfContactTerm::accumulate(const RodState& s, RodForces& out) {
   maybe_rebuild(s);
+  const int ne = active_edges(s);
   contacts_.clear();
   double U = 0.0;
   const double contact = 2.0 * p_.r;
@@ -58,7 +69,7 @@ double SelfContactTerm::accumulate(const RodState& s, RodForces& out) {
   for (const auto& [a, b] : candidates_) {
     const Vec3 &a0 = s.x[a], &a1 = s.x[a + 1], &b0 = s.x[b], &b1 = s.x[b + 1];
     const SegmentClosest c = segment_segment_closest(a0, a1, b0, b1);
-    if (c.dist2 >= contact * contact) continue;
+    if (c.dist2 >= contact * contact || shared_endpoint(c, a, b, ne)) continue;
     const double dist = std::sqrt(c.dist2);
     Vec3 n;
     if (dist > 1e-12 * p_.r) {
@@ -122,11 +133,12 @@ double SelfContactTerm::accumulate(const RodState& s, RodForces& out) {
 
 double SelfContactTerm::energy(const RodState& s) {
   maybe_rebuild(s);
+  const int ne = active_edges(s);
   double U = 0.0;
   const double contact = 2.0 * p_.r;
   for (const auto& [a, b] : candidates_) {
     const SegmentClosest c = segment_segment_closest(s.x[a], s.x[a + 1], s.x[b], s.x[b + 1]);
-    if (c.dist2 >= contact * contact) continue;
+    if (c.dist2 >= contact * contact || shared_endpoint(c, a, b, ne)) continue;
     U += hertz_.energy(contact - std::sqrt(c.dist2));
   }
   return U;

@@ -13,6 +13,7 @@
 #include "engine/contact/cell_grid.hpp"
 #include "engine/contact/friction.hpp"
 #include "engine/contact/hertz.hpp"
+#include "engine/contact/segment_distance.hpp"
 #include "engine/term.hpp"
 
 namespace wirepack {
@@ -62,6 +63,7 @@ class SelfContactTerm : public Term {
   // Number of edges that take part: those with at least one dynamic node.
   static int active_edges(const RodState& s) { return std::min(s.n_free, s.num_edges()); }
   void maybe_rebuild(const RodState& s);
+  bool shared_endpoint(const SegmentClosest& c, int a, int b, int ne) const;
   void rebuild(const RodState& s);
 
   SelfContactParams p_;

@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <ostream>
 #include <random>
+#include <string>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -57,14 +59,13 @@ std::vector<Vec2> rim_layer(const Radii& b, double r) {
     s[k] =
         s[k - 1] + (q(-tc + 2 * tc * k / kSamples) - q(-tc + 2 * tc * (k - 1) / kSamples)).norm();
   }
-  const int m = static_cast<int>(std::floor(s.back() / (2 * r)));  // m gaps of >= 2 r
+  const int m = std::max(1, static_cast<int>(std::floor(s.back() / (2 * r))));  // gaps >= 2 r
   std::vector<Vec2> sites;
-  for (int j = 0, k = 0; j <= m; ++j) {
+  for (int j = 0, k = 0; j <= m; ++j) {  // equal arclength steps, k: sample interval
     const double target = s.back() * j / m;
-    while (k < kSamples && s[k + 1] < target) ++k;
-    sites.push_back(
-        q(-tc +
-          2 * tc * std::min(1.0, (k + (target - s[k]) / (s[k + 1] - s[k] + 1e-300)) / kSamples)));
+    while (k + 1 < kSamples && s[k + 1] < target) ++k;
+    const double f = (k + (target - s[k]) / (s[k + 1] - s[k])) / kSamples;  // s increases
+    sites.push_back(q(-tc + 2 * tc * std::min(1.0, f)));
   }
   return sites;
 }
@@ -139,6 +140,9 @@ std::vector<Vec3> dense_bundle(const Radii& b, double a_shift, unsigned seed, in
 struct Shape {
   double t_over_y, x_over_y;  // R_t / R_y, R_x / R_y
 };
+void PrintTo(const Shape& s, std::ostream* os) {
+  *os << "R_t/R_y=" << s.t_over_y << " R_x/R_y=" << s.x_over_y;
+}
 
 class DenseBundle : public ::testing::TestWithParam<Shape> {};
 
@@ -215,7 +219,7 @@ TEST(CoilRadii, StraightEnteringWireIsIgnored) {
 TEST(CoilRadii, InvariantUnderRigidMotion) {
   // Rotation + translation change nothing but round-off (axis, centroid and cylindrical
   // coordinates are covariant): radii agree to 1e-9 relative.
-  const Radii b{1.0 * kR_y, 2.0 * kR_y, kR_y};  // taller than wide: needs the winding axis
+  const Radii b{1.0 * kR_y, 2.0 * kR_y, kR_y};  // taller than wide: needs the turning axis
   int turns = 0;
   const auto x = dense_bundle(b, 0.37 * kR, 5, &turns);
   const Eigen::Matrix3d Q =
@@ -233,7 +237,7 @@ TEST(CoilRadii, InvariantUnderRigidMotion) {
 }
 
 TEST(CoilRadii, WiresThatAreNotCoilsAreNotOk) {
-  // Documented behaviour: fewer than one net turn about the winding axis gives ok = false.
+  // Documented behaviour: fewer than one net turn about the turning axis gives ok = false.
   std::vector<Vec3> line, arc;
   for (int j = 0; j < 100; ++j) {
     line.push_back(j * Vec3(1e-3, 2e-3, -1e-3));
