@@ -49,27 +49,40 @@ void SelfContactTerm::rebuild(const RodState& s) {
   }
 }
 
-// A closest point at the far end of an edge is the same point as the start of the next edge of
-// that polyline: counting it on both would double the force where a wire crosses a joint of
-// the other (a bump at every element boundary). The pair with the next edge owns it, unless
-// that pair is excluded as neighbours along the wire.
-bool SelfContactTerm::shared_endpoint(const SegmentClosest& c, int a, int b, int ne) const {
-  if (c.t == 1.0 && b + 1 < ne) return true;
-  if (c.s == 1.0 && a + 1 < ne && b - (a + 1) > exclude_) return true;
-  return false;
+int SelfContactTerm::find_contact(int a, int b) const {
+  const auto it = std::lower_bound(contacts_.begin(), contacts_.end(), std::make_pair(a, b),
+                                   [](const WireContact& c, const std::pair<int, int>& k) {
+                                     return std::make_pair(c.a, c.b) < k;
+                                   });
+  return it != contacts_.end() && it->a == a && it->b == b
+             ? static_cast<int>(it - contacts_.begin())
+             : -1;
 }
 
-double SelfContactTerm::accumulate(const RodState& s, RodForces& out) {
+namespace {
+
+// Parameter of the point of segment [b0, b1] closest to x, in [0, 1].
+double closest_on_segment(const Vec3& x, const Vec3& b0, const Vec3& b1) {
+  const Vec3 d = b1 - b0;
+  const double dd = d.squaredNorm();
+  if (dd == 0.0) return 0.0;
+  return std::clamp((x - b0).dot(d) / dd, 0.0, 1.0);
+}
+
+}  // namespace
+
+double SelfContactTerm::evaluate(const RodState& s, RodForces* out) {
   maybe_rebuild(s);
   const int ne = active_edges(s);
-  contacts_.clear();
-  double U = 0.0;
   const double contact = 2.0 * p_.r;
-  // Narrow phase: every touching pair with its closest points and normal.
+  const double m_eff = 0.5 * p_.node_mass;
+  double U = 0.0;
+  contacts_.clear();
+  // Edge pairs: capsule against capsule (candidates are sorted, so contacts_ is too).
   for (const auto& [a, b] : candidates_) {
     const Vec3 &a0 = s.x[a], &a1 = s.x[a + 1], &b0 = s.x[b], &b1 = s.x[b + 1];
     const SegmentClosest c = segment_segment_closest(a0, a1, b0, b1);
-    if (c.dist2 >= contact * contact || shared_endpoint(c, a, b, ne)) continue;
+    if (c.dist2 >= contact * contact) continue;
     const double dist = std::sqrt(c.dist2);
     Vec3 n;
     if (dist > 1e-12 * p_.r) {
@@ -80,34 +93,115 @@ double SelfContactTerm::accumulate(const RodState& s, RodForces& out) {
       if (n.squaredNorm() == 0.0) continue;
       n.normalize();
     }
-    const double delta = contact - dist;
-    U += hertz_.energy(delta);
-    contacts_.push_back(WireContact{a, b, c.s, c.t, n, delta, 0.0});
+    WireContact w{a, b, c.s, c.t, n, contact - dist, 0.0};
+    U += hertz_.energy(w.delta);
+    contacts_.push_back(w);
   }
+  if (out) {
+    for (WireContact& c : contacts_) {
+      const Vec3 va = (1.0 - c.s) * s.v[c.a] + c.s * s.v[c.a + 1];
+      const Vec3 vb = (1.0 - c.t) * s.v[c.b] + c.t * s.v[c.b + 1];
+      c.force =
+          damped_normal_force(hertz_, c.delta, -(va - vb).dot(c.normal), p_.damping_ratio, m_eff);
+      const Vec3 F = c.force * c.normal;
+      out->f[c.a] += (1.0 - c.s) * F;
+      out->f[c.a + 1] += c.s * F;
+      out->f[c.b] -= (1.0 - c.t) * F;
+      out->f[c.b + 1] -= c.t * F;
+    }
+  }
+  // Joint corrections (inclusion-exclusion), each owned by the pair (a, b) at its lower-left:
+  // the ball of joint a+1 against edge b and the ball of joint b+1 against edge a are
+  // subtracted, the two balls against each other added back. A correction only matters where
+  // the pair (a, b) itself touches (a ball is inside its edge's capsule).
+  const size_t num_pairs = contacts_.size();
+  for (size_t k = 0; k < num_pairs; ++k) {
+    const int a = contacts_[k].a, b = contacts_[k].b;
+    const bool ja = pair_valid(a + 1, b, ne);  // joint a+1 is shared by pairs (a,b), (a+1,b)
+    const bool jb = b + 1 < ne;                // joint b+1 is shared by pairs (a,b), (a,b+1)
+    struct Part {
+      int node;        // the joint node
+      int e0, e1;      // the edge it is checked against (nodes e0, e0+1) or, for ball-ball, -1
+      int other;       // ball-ball: the other joint node
+      double sign;     // -1 subtract, +1 add back
+      int k2, k3, k4;  // the other pairs that share this correction
+    };
+    Part parts[3];
+    int np = 0;
+    if (ja) parts[np++] = Part{a + 1, b, b + 1, -1, -1.0, find_contact(a + 1, b), -1, -1};
+    if (jb) parts[np++] = Part{b + 1, a, a + 1, -1, -1.0, find_contact(a, b + 1), -1, -1};
+    if (ja && jb && pair_valid(a + 1, b + 1, ne)) {
+      parts[np++] = Part{a + 1,
+                         -1,
+                         -1,
+                         b + 1,
+                         +1.0,
+                         find_contact(a + 1, b),
+                         find_contact(a, b + 1),
+                         find_contact(a + 1, b + 1)};
+    }
+    for (int q = 0; q < np; ++q) {
+      const Part& pt = parts[q];
+      const Vec3& x = s.x[pt.node];
+      double t = 0.0;
+      Vec3 y;  // the closest point of the other body [m]
+      Vec3 vy;
+      if (pt.e0 >= 0) {
+        t = closest_on_segment(x, s.x[pt.e0], s.x[pt.e1]);
+        y = s.x[pt.e0] + t * (s.x[pt.e1] - s.x[pt.e0]);
+        vy = (1.0 - t) * s.v[pt.e0] + t * s.v[pt.e1];
+      } else {
+        y = s.x[pt.other];
+        vy = s.v[pt.other];
+      }
+      const Vec3 d = x - y;
+      const double dist2 = d.squaredNorm();
+      if (dist2 >= contact * contact || dist2 == 0.0) continue;
+      const double dist = std::sqrt(dist2);
+      const double delta = contact - dist;
+      U += pt.sign * hertz_.energy(delta);
+      if (!out) continue;
+      const Vec3 n = d / dist;
+      const double f =
+          damped_normal_force(hertz_, delta, -(s.v[pt.node] - vy).dot(n), p_.damping_ratio, m_eff);
+      const Vec3 F = pt.sign * f * n;  // on the joint node; -F on the other body
+      out->f[pt.node] += F;
+      if (pt.e0 >= 0) {
+        out->f[pt.e0] -= (1.0 - t) * F;
+        out->f[pt.e1] -= t * F;
+      } else {
+        out->f[pt.other] -= F;
+      }
+      // Share the correction among the pairs it belongs to (their friction bounds).
+      const int ks[4] = {static_cast<int>(k), pt.k2, pt.k3, pt.k4};
+      const int owners = pt.e0 >= 0 ? 2 : 4;
+      for (int o = 0; o < owners; ++o) {
+        if (ks[o] >= 0) contacts_[ks[o]].force += pt.sign * f / owners;
+      }
+    }
+  }
+  return U;
+}
+
+double SelfContactTerm::accumulate(const RodState& s, RodForces& out) {
+  const double U = evaluate(s, &out);
+  double kmax = 0.0;
+  for (const WireContact& c : contacts_) kmax = std::max(kmax, hertz_.stiffness(c.delta));
   if (friction_) {
     for (const WireContact& c : contacts_) friction_->mark(ContactKey{c.a, c.b});
     friction_->finish_marking();
-  }
-  // Forces: Hertz + normal dashpot, then Coulomb friction at the surfaces.
-  double kmax = 0.0;
-  const double m_eff = 0.5 * p_.node_mass;
-  const bool twist = s.has_twist();
-  const double r = p_.r;
-  for (WireContact& c : contacts_) {
-    const int a = c.a, b = c.b;
-    const Vec3& n = c.normal;  // from b to a
-    const Vec3 va = (1.0 - c.s) * s.v[a] + c.s * s.v[a + 1];
-    const Vec3 vb = (1.0 - c.t) * s.v[b] + c.t * s.v[b + 1];
-    const double approach = -(va - vb).dot(n);
-    const double fn = damped_normal_force(hertz_, c.delta, approach, p_.damping_ratio, m_eff);
-    c.force = fn;
-    Vec3 F = fn * n;  // on edge a; -F on edge b
-    const double kn = hertz_.stiffness(c.delta);
-    kmax = std::max(kmax, kn);
-    Vec3 ta, tb;
-    if (friction_) {
+    // Coulomb friction at the surfaces of every pair, bounded by its net normal force.
+    const double m_eff = 0.5 * p_.node_mass;
+    const bool twist = s.has_twist();
+    const double r = p_.r;
+    for (const WireContact& c : contacts_) {
+      const int a = c.a, b = c.b;
+      const Vec3& n = c.normal;  // from b to a
+      const double fn = std::max(c.force, 0.0);
       // Surface points: a at -r n from its axis, b at +r n; spin adds omega t x (offset).
-      Vec3 v_rel = va - vb;
+      Vec3 v_rel =
+          (1.0 - c.s) * s.v[a] + c.s * s.v[a + 1] - (1.0 - c.t) * s.v[b] - c.t * s.v[b + 1];
+      Vec3 ta, tb;
       if (twist) {
         ta = (s.x[a + 1] - s.x[a]).normalized();
         tb = (s.x[b + 1] - s.x[b]).normalized();
@@ -115,33 +209,24 @@ double SelfContactTerm::accumulate(const RodState& s, RodForces& out) {
       }
       const ContactKey nb[8] = {{a + 1, b},     {a - 1, b},     {a, b + 1},     {a, b - 1},
                                 {a + 1, b + 1}, {a - 1, b - 1}, {a + 1, b - 1}, {a - 1, b + 1}};
-      const Vec3 ft = friction_->force(ContactKey{a, b}, n, fn, kn, v_rel, m_eff, nb, 8);
-      F += ft;
+      const Vec3 ft =
+          friction_->force(ContactKey{a, b}, n, fn, hertz_.stiffness(c.delta), v_rel, m_eff, nb, 8);
+      out.f[a] += (1.0 - c.s) * ft;
+      out.f[a + 1] += c.s * ft;
+      out.f[b] -= (1.0 - c.t) * ft;
+      out.f[b + 1] -= c.t * ft;
       if (twist) {
         out.torque[a] += (-r * n).cross(ft).dot(ta);
         out.torque[b] += (r * n).cross(-ft).dot(tb);
       }
     }
-    out.f[a] += (1.0 - c.s) * F;
-    out.f[a + 1] += c.s * F;
-    out.f[b] -= (1.0 - c.t) * F;
-    out.f[b + 1] -= c.t * F;
   }
   max_stiffness_ = kmax * (friction_ ? 1.0 + p_.friction.stiffness_ratio : 1.0);
   return U;
 }
 
 double SelfContactTerm::energy(const RodState& s) {
-  maybe_rebuild(s);
-  const int ne = active_edges(s);
-  double U = 0.0;
-  const double contact = 2.0 * p_.r;
-  for (const auto& [a, b] : candidates_) {
-    const SegmentClosest c = segment_segment_closest(s.x[a], s.x[a + 1], s.x[b], s.x[b + 1]);
-    if (c.dist2 >= contact * contact || shared_endpoint(c, a, b, ne)) continue;
-    U += hertz_.energy(contact - std::sqrt(c.dist2));
-  }
-  return U;
+  return evaluate(s, nullptr);
 }
 
 double SelfContactTerm::omega_max_sq(const RodInertia& inertia) const {

@@ -6,6 +6,14 @@
 // Pairs closer than pi r in arc length along the wire (a hairpin of radius r) are excluded, so a
 // bent wire does not repel itself. Normal force: Hertz with E* = E_w / (2 (1 - nu_w^2)) and the
 // crossed-cylinders radius R* = r.
+//
+// The wire is a chain of capsules, and two consecutive capsules overlap in the ball around
+// their shared node. Summing the contacts of every edge pair would count a wire lying across a
+// joint twice (a bump in the normal force, and in the friction bound, at every element
+// boundary a wire slides over). The energy therefore follows inclusion-exclusion over the
+// union of capsules: pairs of edges, minus (joint ball, edge) pairs, plus (joint ball, joint
+// ball) pairs. For straight chains this is exact; it is continuous everywhere (no contact
+// appears or vanishes with a finite energy) and never negative.
 #include <memory>
 #include <utility>
 #include <vector>
@@ -35,7 +43,7 @@ struct WireContact {
   double s = 0, t = 0;
   Vec3 normal = Vec3::Zero();
   double delta = 0;
-  double force = 0;
+  double force = 0;      // normal force of the edge pair, net of its share of joint corrections [N]
 };
 
 class SelfContactTerm : public Term {
@@ -46,7 +54,8 @@ class SelfContactTerm : public Term {
   double energy(const RodState& s) override;
   double omega_max_sq(const RodInertia& inertia) const override;
 
-  int contacts() const { return static_cast<int>(contacts_.size()); }  // N of DESIGN §4
+  // N of DESIGN §4: edge pairs whose capsules overlap.
+  int contacts() const { return static_cast<int>(contacts_.size()); }
   const std::vector<WireContact>& contact_list() const { return contacts_; }
   void begin_trial(double dt) override {
     if (friction_) friction_->begin_trial(dt);
@@ -63,7 +72,10 @@ class SelfContactTerm : public Term {
   // Number of edges that take part: those with at least one dynamic node.
   static int active_edges(const RodState& s) { return std::min(s.n_free, s.num_edges()); }
   void maybe_rebuild(const RodState& s);
-  bool shared_endpoint(const SegmentClosest& c, int a, int b, int ne) const;
+  // Energy of the union of capsules; with `out`, also forces and the contact list.
+  double evaluate(const RodState& s, RodForces* out);
+  bool pair_valid(int a, int b, int ne) const { return a >= 0 && b < ne && b - a > exclude_; }
+  int find_contact(int a, int b) const;
   void rebuild(const RodState& s);
 
   SelfContactParams p_;
@@ -76,7 +88,7 @@ class SelfContactTerm : public Term {
   Vec3List x_at_build_;
   int edges_at_build_ = -1;
   long rebuilds_ = 0;
-  std::vector<WireContact> contacts_;
+  std::vector<WireContact> contacts_;  // sorted by (a, b)
   double max_stiffness_ = 0;
   std::unique_ptr<FrictionHistory> friction_;  // null when mu_s = 0 (no history, no torques)
 };
