@@ -71,12 +71,14 @@ void BM_ElasticForces(benchmark::State& state) {
 }
 BENCHMARK(BM_ElasticForces)->Arg(0)->Arg(1)->ArgName("twist")->Unit(benchmark::kMicrosecond);
 
-// (b) Whole steps (predictor, all terms, damping, corrector, feeder) at a packed state.
+// (b) Whole steps (predictor, all terms, damping, corrector, feeder) at a packed state;
+// argument: mu_s x 10 (friction and twist are on for mu_s > 0).
 void BM_PackedStep(benchmark::State& state) {
   SceneParams p;
   p.shell = ShellKind::Rigid;
   p.rho = 20;
-  p.mu_s = 0;
+  p.mu_s = 0.1 * static_cast<double>(state.range(0));
+  p.mu_d = 0.9 * p.mu_s;
   p.l_max = 1e9;
   Simulation sim(p);
   sim.advance_to(10.0);
@@ -92,7 +94,12 @@ void BM_PackedStep(benchmark::State& state) {
   state.counters["l_end"] = sim.l();
   state.counters["peak_MiB"] = peak_rss_mib();
 }
-BENCHMARK(BM_PackedStep)->Iterations(20000)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_PackedStep)
+    ->Arg(0)
+    ->Arg(10)
+    ->ArgName("mu_s_x10")
+    ->Iterations(20000)
+    ->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 
