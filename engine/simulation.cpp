@@ -38,7 +38,7 @@ struct Simulation::Impl {
   }
 
   // Generalised accelerations of the dynamic DOFs; returns omega_max^2 [1/s^2].
-  double evaluate(RodState& s, Vec3List& a, std::vector<double>& alpha) {
+  double evaluate(RodState& s, Vec3List& a, std::vector<double>& alpha, Vec3List& shell_a) {
     forces.reset(s);
     for (auto& t : assembly.terms) t->begin_trial(integrator.trial_dt());
     double omega2 = 0.0;
@@ -51,6 +51,7 @@ struct Simulation::Impl {
     a.resize(n);
     const double inv_m = 1.0 / assembly.inertia.node_mass;
     for (int i = 0; i < n; ++i) a[i] = i < s.n_free ? Vec3(inv_m * forces.f[i]) : Vec3::Zero();
+    shell_a.assign(s.shell_x.size(), Vec3::Zero());
     alpha.assign(s.theta.size(), 0.0);
     if (s.has_twist()) {
       const double inv_i = 1.0 / assembly.inertia.edge_twist_inertia;
@@ -62,7 +63,9 @@ struct Simulation::Impl {
   }
 
   EvaluateFn eval_fn() {
-    return [this](RodState& s, Vec3List& a, std::vector<double>& al) { return evaluate(s, a, al); };
+    return [this](RodState& s, Vec3List& a, std::vector<double>& al, Vec3List& sa) {
+      return evaluate(s, a, al, sa);
+    };
   }
   static PositionsChangedFn moved_fn() {
     return [](RodState& s) { update_reference_frames(s); };

@@ -17,7 +17,7 @@ void PredictorCorrector::initialise(RodState& s, const EvaluateFn& eval,
                                     const PositionsChangedFn& moved) {
   moved(s);
   trial_dt_ = 0.0;
-  const double omega2 = eval(s, a_, alpha_);
+  const double omega2 = eval(s, a_, alpha_, sa_);
   dt_stable_ = stable_step(omega2);
   if (dt_ <= 0) dt_ = 0.1 * dt_stable_;  // start cautiously; the controller grows it
   dt_ = std::min(dt_, dt_stable_);
@@ -31,6 +31,9 @@ double PredictorCorrector::step(RodState& s, const EvaluateFn& eval,
   v0_.assign(s.v.begin(), s.v.end());
   th0_.assign(s.theta.begin(), s.theta.end());
   om0_.assign(s.omega.begin(), s.omega.end());
+  const int nv = static_cast<int>(s.shell_x.size());
+  sx0_.assign(s.shell_x.begin(), s.shell_x.end());
+  sv0_.assign(s.shell_v.begin(), s.shell_v.end());
   if (s.has_twist()) {
     saved_frames_.ref1 = s.ref1;
     saved_frames_.ref_tangent = s.ref_tangent;
@@ -48,9 +51,13 @@ double PredictorCorrector::step(RodState& s, const EvaluateFn& eval,
       s.theta[j] = th0_[j] + dt * om0_[j] + h2 * alpha_[j];
       s.omega[j] = om0_[j] + dt * alpha_[j];
     }
+    for (int k = 0; k < nv; ++k) {
+      s.shell_x[k] = sx0_[k] + dt * sv0_[k] + h2 * sa_[k];
+      s.shell_v[k] = sv0_[k] + dt * sa_[k];
+    }
     moved(s);
     trial_dt_ = dt;
-    const double omega2 = eval(s, a_new_, alpha_new_);
+    const double omega2 = eval(s, a_new_, alpha_new_, sa_new_);
     // Corrector error estimate: dt^2/6 |a' - a| (positions), r dt^2/6 |alpha' - alpha| (twist).
     double da = 0.0;
     bool finite = true;
@@ -62,6 +69,11 @@ double PredictorCorrector::step(RodState& s, const EvaluateFn& eval,
     da = std::sqrt(da);
     for (int j = 0; j < ne; ++j) {
       const double d = r_ * std::abs(alpha_new_[j] - alpha_[j]);
+      finite = finite && std::isfinite(d);
+      da = std::max(da, d);
+    }
+    for (int k = 0; k < nv; ++k) {
+      const double d = (sa_new_[k] - sa_[k]).norm();
       finite = finite && std::isfinite(d);
       da = std::max(da, d);
     }
@@ -84,6 +96,8 @@ double PredictorCorrector::step(RodState& s, const EvaluateFn& eval,
       std::copy(v0_.begin(), v0_.end(), s.v.begin());
       std::copy(th0_.begin(), th0_.end(), s.theta.begin());
       std::copy(om0_.begin(), om0_.end(), s.omega.begin());
+      std::copy(sx0_.begin(), sx0_.end(), s.shell_x.begin());
+      std::copy(sv0_.begin(), sv0_.end(), s.shell_v.begin());
       if (s.has_twist()) {
         s.ref1 = saved_frames_.ref1;
         s.ref_tangent = saved_frames_.ref_tangent;
@@ -94,8 +108,10 @@ double PredictorCorrector::step(RodState& s, const EvaluateFn& eval,
     // Corrector on velocities.
     for (int i = 0; i < n; ++i) s.v[i] = v0_[i] + 0.5 * dt * (a_[i] + a_new_[i]);
     for (int j = 0; j < ne; ++j) s.omega[j] = om0_[j] + 0.5 * dt * (alpha_[j] + alpha_new_[j]);
+    for (int k = 0; k < nv; ++k) s.shell_v[k] = sv0_[k] + 0.5 * dt * (sa_[k] + sa_new_[k]);
     std::swap(a_, a_new_);
     std::swap(alpha_, alpha_new_);
+    std::swap(sa_, sa_new_);
     // Hysteresis: keep the step unless the error asks for a clear change. A step that follows
     // the error estimate every step correlates with the oscillation phase and makes the
     // (otherwise time-reversible) scheme drift in energy.

@@ -23,9 +23,11 @@ struct StepControl {
   double dt_floor = 0;       // below this the step has collapsed [s]
 };
 
-// Accelerations of the dynamic DOFs at a state: fills a (n, zero for the guide) and alpha
-// (n-1, zero for fixed edges); returns omega_max^2 of the system at that state [1/s^2].
-using EvaluateFn = std::function<double(RodState&, Vec3List& a, std::vector<double>& alpha)>;
+// Accelerations of the dynamic DOFs at a state: fills a (n, zero for the guide), alpha
+// (n-1, zero for fixed edges) and shell_a (one per shell vertex, zero when clamped; left empty
+// without a shell); returns omega_max^2 of the system at that state [1/s^2].
+using EvaluateFn =
+    std::function<double(RodState&, Vec3List& a, std::vector<double>& alpha, Vec3List& shell_a)>;
 // Called after positions change (reference frames, ...).
 using PositionsChangedFn = std::function<void(RodState&)>;
 
@@ -53,6 +55,7 @@ class PredictorCorrector {
   double dt_ = 0, dt_stable_ = 0, trial_dt_ = 0;
   long rejected_ = 0;
   Vec3List a_, a_new_, x0_, v0_;
+  Vec3List sa_, sa_new_, sx0_, sv0_;  // the same for shell vertices
   std::vector<double> alpha_, alpha_new_, th0_, om0_;
   RodState saved_frames_;  // ref1 / ref_tangent / ref_twist before a step, for rejection
 };

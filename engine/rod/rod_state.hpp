@@ -1,5 +1,6 @@
 #pragma once
-// Mutable state of one discrete elastic rod (Bergou et al. 2008/2010 style).
+// Mutable state of one run: the discrete elastic rod (Bergou et al. 2008/2010 style) and,
+// for an elastic shell (Engine III), the shell's vertices.
 // Nodes are stored tip first: node 0 is the free tip, the highest indices are the kinematic
 // guide outside the hole. Edge j joins nodes j and j+1.
 #include <vector>
@@ -21,6 +22,10 @@ struct RodState {
   Vec3List ref_tangent;           // unit tangent at which ref1 was last transported (n-1)
   std::vector<double> ref_twist;  // reference twist at node i (n; 0 at the two ends) [rad]
 
+  // Elastic shell (empty for a rigid sphere): mid-surface vertices of the mesh.
+  Vec3List shell_x;  // vertex positions (nv) [m]
+  Vec3List shell_v;  // vertex velocities (nv) [m/s]
+
   int num_nodes() const { return static_cast<int>(x.size()); }
   int num_edges() const { return static_cast<int>(x.size()) - 1; }
   bool has_twist() const { return !theta.empty(); }
@@ -28,13 +33,16 @@ struct RodState {
   bool edge_free(int j) const { return j + 1 < n_free; }
 };
 
-// Generalised forces on the rod: -dU/dx per node (n) [N] and -dU/dtheta per edge (n-1) [N m].
+// Generalised forces: -dU/dx per node (n) [N], -dU/dtheta per edge (n-1) [N m] and -dU/dx
+// per shell vertex (nv) [N].
 struct RodForces {
   Vec3List f;
   std::vector<double> torque;
+  Vec3List shell_f;
   void reset(const RodState& s) {
     f.assign(s.x.size(), Vec3::Zero());
     torque.assign(s.theta.size(), 0.0);
+    shell_f.assign(s.shell_x.size(), Vec3::Zero());
   }
 };
 

@@ -126,7 +126,7 @@ struct Relaxation {
   long steps = 0;       // accepted steps
 
   // Accelerations for the predictor-corrector; the residual excludes the drag.
-  double evaluate(RodState& s, Vec3List& a, std::vector<double>& alpha) {
+  double evaluate(RodState& s, Vec3List& a, std::vector<double>& alpha, Vec3List&) {
     f.reset(s);
     double omega2 = 0;
     for (Term* term : terms) {
@@ -156,8 +156,8 @@ struct Relaxation {
     c.damping_ratio = 0.0;  // the drag damps the fastest modes only weakly
     c.dt_floor = 1e-15;
     PredictorCorrector pc(c, 1.0);
-    auto eval = [this](RodState& st, Vec3List& a, std::vector<double>& al) {
-      return evaluate(st, a, al);
+    auto eval = [this](RodState& st, Vec3List& a, std::vector<double>& al, Vec3List& sa) {
+      return evaluate(st, a, al, sa);
     };
     auto moved = [](RodState&) {};
     pc.initialise(s, eval, moved);

@@ -33,7 +33,7 @@ struct FrictionRig {
     commit();
   }
   EvaluateFn eval() {
-    return [this](RodState& st, Vec3List& a, std::vector<double>& alpha) {
+    return [this](RodState& st, Vec3List& a, std::vector<double>& alpha, Vec3List&) {
       f.reset(st);
       double omega2 = 0;
       for (auto& term : terms) {

@@ -45,7 +45,7 @@ struct FreeRod {
     d.c_transverse = 2.0 * zeta * 200.0 * m;
     return d;
   }
-  double evaluate(RodState& st, Vec3List& a, std::vector<double>& alpha) {
+  double evaluate(RodState& st, Vec3List& a, std::vector<double>& alpha, Vec3List&) {
     f.reset(st);
     stretch.accumulate(st, f);
     bend.accumulate(st, f);
@@ -68,8 +68,8 @@ TEST(PredictorCorrector, ConservesEnergyWithoutDamping) {
   c.tolerance = 1e-4 * rod.mat.r;
   c.dt_floor = 1e-15;
   PredictorCorrector pc(c, rod.mat.r);
-  auto eval = [&](RodState& s, Vec3List& a, std::vector<double>& al) {
-    return rod.evaluate(s, a, al);
+  auto eval = [&](RodState& s, Vec3List& a, std::vector<double>& al, Vec3List& sa) {
+    return rod.evaluate(s, a, al, sa);
   };
   auto moved = [](RodState&) {};
   pc.initialise(rod.s, eval, moved);
@@ -95,8 +95,8 @@ TEST(PredictorCorrector, DampingDissipatesEnergy) {
   c.damping_ratio = 0.5;
   c.dt_floor = 1e-15;
   PredictorCorrector pc(c, rod.mat.r);
-  auto eval = [&](RodState& s, Vec3List& a, std::vector<double>& al) {
-    return rod.evaluate(s, a, al);
+  auto eval = [&](RodState& s, Vec3List& a, std::vector<double>& al, Vec3List& sa) {
+    return rod.evaluate(s, a, al, sa);
   };
   auto moved = [](RodState&) {};
   pc.initialise(rod.s, eval, moved);

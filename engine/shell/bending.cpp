@@ -1,0 +1,235 @@
+#include "engine/shell/bending.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace wirepack {
+
+namespace {
+
+// Vertex k of face f and the cyclic successors used by s_i.
+inline int next(int i) { return i == 2 ? 0 : i + 1; }
+inline int prev(int i) { return i == 0 ? 2 : i - 1; }
+
+}  // namespace
+
+BendingTerm::BendingTerm(std::shared_ptr<const ShellMesh> mesh, const ShellMaterial& material)
+    : mesh_(std::move(mesh)), B_(material.B()), nu_(material.nu) {
+  const ShellMesh& m = *mesh_;
+  const int nf = m.num_faces();
+  const int ne = static_cast<int>(m.edges.size());
+  if (static_cast<int>(m.face_edges.size()) != nf || static_cast<int>(m.edge_faces.size()) != ne)
+    throw std::invalid_argument("BendingTerm: mesh topology not built (build_topology)");
+  face_normal_.resize(nf);
+  face_dblarea_.resize(nf);
+  grad_face_normal_.resize(nf);
+  edge_normal_.resize(ne);
+  edge_mnorm_.assign(ne, 1.0);
+  grad_edge_normal_.resize(ne);
+
+  // Rest metric abar_ij = e_i . e_j, area, smallest altitude.
+  rest_area_.resize(nf);
+  abar_inv_.resize(nf);
+  h_min_ = std::numeric_limits<double>::infinity();
+  for (int f = 0; f < nf; ++f) {
+    const auto& v = m.faces[f];
+    const Vec3 e1 = m.rest[v[1]] - m.rest[v[0]];
+    const Vec3 e2 = m.rest[v[2]] - m.rest[v[0]];
+    const double dblarea = e1.cross(e2).norm();
+    if (!(dblarea > 0.0)) throw std::invalid_argument("BendingTerm: degenerate rest face");
+    Eigen::Matrix2d abar;
+    abar << e1.dot(e1), e1.dot(e2), e1.dot(e2), e2.dot(e2);
+    abar_inv_[f] = abar.inverse();
+    rest_area_[f] = 0.5 * dblarea;
+    const double lmax = std::max({e1.norm(), e2.norm(), (e2 - e1).norm()});
+    h_min_ = std::min(h_min_, dblarea / lmax);
+  }
+
+  // Edge kinds: a boundary edge between two clamped vertices keeps its rest normal.
+  edge_kind_.resize(ne);
+  edge_fixed_normal_.assign(ne, Vec3::Zero());
+  for (int e = 0; e < ne; ++e) {
+    const auto& ef = m.edge_faces[e];
+    if (ef[0] >= 0 && ef[1] >= 0) {
+      edge_kind_[e] = EdgeKind::kInterior;
+      continue;
+    }
+    const int f = ef[0] >= 0 ? ef[0] : ef[1];
+    const bool clamped = !m.clamped.empty() && m.clamped[m.edges[e][0]] && m.clamped[m.edges[e][1]];
+    edge_kind_[e] = clamped ? EdgeKind::kClamped : EdgeKind::kFree;
+    if (clamped) {
+      const auto& v = m.faces[f];
+      edge_fixed_normal_[e] =
+          (m.rest[v[1]] - m.rest[v[0]]).cross(m.rest[v[2]] - m.rest[v[0]]).normalized();
+    }
+  }
+
+  // Rest second fundamental form with the same discretisation.
+  compute_normals(m.rest);
+  bbar_.resize(nf);
+  for (int f = 0; f < nf; ++f) {
+    const Eigen::Vector3d s = edge_folds(m.rest, f);
+    bbar_[f] << s[0] + s[1], s[0], s[0], s[0] + s[2];
+  }
+}
+
+void BendingTerm::compute_normals(const Vec3List& x) {
+  const ShellMesh& m = *mesh_;
+  const int nf = m.num_faces();
+  for (int f = 0; f < nf; ++f) {
+    const auto& v = m.faces[f];
+    const Vec3 c = (x[v[1]] - x[v[0]]).cross(x[v[2]] - x[v[0]]);
+    face_dblarea_[f] = c.norm();
+    face_normal_[f] = c / face_dblarea_[f];
+  }
+  const int ne = static_cast<int>(m.edges.size());
+  for (int e = 0; e < ne; ++e) {
+    const auto& ef = m.edge_faces[e];
+    switch (edge_kind_[e]) {
+      case EdgeKind::kInterior: {
+        const Vec3 mv = face_normal_[ef[0]] + face_normal_[ef[1]];
+        edge_mnorm_[e] = mv.norm();
+        edge_normal_[e] = mv / edge_mnorm_[e];
+        break;
+      }
+      case EdgeKind::kFree:
+        edge_normal_[e] = face_normal_[ef[0] >= 0 ? ef[0] : ef[1]];
+        break;
+      case EdgeKind::kClamped:
+        edge_normal_[e] = edge_fixed_normal_[e];
+        break;
+    }
+  }
+}
+
+Eigen::Vector3d BendingTerm::edge_folds(const Vec3List& x, int f) const {
+  const auto& v = mesh_->faces[f];
+  const auto& fe = mesh_->face_edges[f];
+  Eigen::Vector3d s;
+  for (int i = 0; i < 3; ++i) {
+    // s_i = n_i . (q_{i+1} + q_{i+2} - 2 q_i); identically 0 on a free edge (n_i = N_f).
+    if (edge_kind_[fe[i]] == EdgeKind::kFree) {
+      s[i] = 0.0;
+      continue;
+    }
+    const Vec3 w = x[v[next(i)]] + x[v[prev(i)]] - 2.0 * x[v[i]];
+    s[i] = edge_normal_[fe[i]].dot(w);
+  }
+  return s;
+}
+
+double BendingTerm::face_energy(int f, const Eigen::Vector3d& s, Eigen::Vector3d* dU_ds) const {
+  Eigen::Matrix2d D;  // b - bbar [m]
+  D << s[0] + s[1], s[0], s[0], s[0] + s[2];
+  D -= bbar_[f];
+  const Eigen::Matrix2d& Ai = abar_inv_[f];
+  const Eigen::Matrix2d S = Ai * D;  // shape-operator change, mixed components [1/m]
+  const double trS = S.trace();
+  const double trS2 = (S * S).trace();
+  const double k = B_ * rest_area_[f];  // [N m^3]
+  if (dU_ds) {
+    // P_jk = dU/dD_jk = B Abar [nu tr(S) abar^{jk} + (1 - nu) (abar^{-1} D abar^{-1})^{jk}];
+    // b_00 = s0 + s1, b_01 = b_10 = s0, b_11 = s0 + s2.
+    const Eigen::Matrix2d P = k * (nu_ * trS * Ai + (1.0 - nu_) * S * Ai);
+    (*dU_ds)[0] = P(0, 0) + P(1, 1) + P(0, 1) + P(1, 0);
+    (*dU_ds)[1] = P(0, 0);
+    (*dU_ds)[2] = P(1, 1);
+  }
+  return 0.5 * k * (nu_ * trS * trS + (1.0 - nu_) * trS2);
+}
+
+double BendingTerm::accumulate(const Vec3List& x, Vec3List& out) {
+  const ShellMesh& m = *mesh_;
+  const int nf = m.num_faces();
+  const int ne = static_cast<int>(m.edges.size());
+  compute_normals(x);
+  std::fill(grad_edge_normal_.begin(), grad_edge_normal_.end(), Vec3::Zero());
+  std::fill(grad_face_normal_.begin(), grad_face_normal_.end(), Vec3::Zero());
+
+  // 1. Per face: U_f(s) and the explicit dependence of s_i = n_i . w_i on the positions
+  //    (w_i = q_{i+1} + q_{i+2} - 2 q_i); dU/dn_e collects sigma_i w_i from both faces.
+  double U = 0.0;
+  for (int f = 0; f < nf; ++f) {
+    const auto& v = m.faces[f];
+    const auto& fe = m.face_edges[f];
+    const Eigen::Vector3d s = edge_folds(x, f);
+    Eigen::Vector3d sigma;  // dU/ds_i [N]
+    U += face_energy(f, s, &sigma);
+    for (int i = 0; i < 3; ++i) {
+      const int e = fe[i];
+      if (edge_kind_[e] == EdgeKind::kFree) continue;
+      const Vec3 gn = sigma[i] * edge_normal_[e];  // dU/dw_i
+      out[v[i]] += 2.0 * gn;
+      out[v[next(i)]] -= gn;
+      out[v[prev(i)]] -= gn;
+      if (edge_kind_[e] == EdgeKind::kInterior) {
+        grad_edge_normal_[e] += sigma[i] * (x[v[next(i)]] + x[v[prev(i)]] - 2.0 * x[v[i]]);
+      }
+    }
+  }
+
+  // 2. Edge normal n = m / |m|, m = N_f0 + N_f1: dU/dm = (I - n n^T) dU/dn / |m|, and dU/dm
+  //    goes to both face normals.
+  for (int e = 0; e < ne; ++e) {
+    if (edge_kind_[e] != EdgeKind::kInterior) continue;
+    const Vec3& n = edge_normal_[e];
+    const Vec3& g = grad_edge_normal_[e];
+    const Vec3 gm = (g - n * n.dot(g)) / edge_mnorm_[e];
+    grad_face_normal_[m.edge_faces[e][0]] += gm;
+    grad_face_normal_[m.edge_faces[e][1]] += gm;
+  }
+
+  // 3. Face normal N = c / |c|, c = e1 x e2 (e1 = q1 - q0, e2 = q2 - q0):
+  //    dU/dc = (I - N N^T) dU/dN / |c|;  dU/dq1 = e2 x dU/dc, dU/dq2 = dU/dc x e1,
+  //    dU/dq0 = -(dU/dq1 + dU/dq2).
+  for (int f = 0; f < nf; ++f) {
+    const Vec3& g = grad_face_normal_[f];
+    if (g.isZero(0.0)) continue;
+    const auto& v = m.faces[f];
+    const Vec3& N = face_normal_[f];
+    const Vec3 gc = (g - N * N.dot(g)) / face_dblarea_[f];
+    const Vec3 e1 = x[v[1]] - x[v[0]];
+    const Vec3 e2 = x[v[2]] - x[v[0]];
+    const Vec3 g1 = e2.cross(gc);
+    const Vec3 g2 = gc.cross(e1);
+    out[v[1]] -= g1;
+    out[v[2]] -= g2;
+    out[v[0]] += g1 + g2;
+  }
+  return U;
+}
+
+double BendingTerm::energy(const Vec3List& x) {
+  compute_normals(x);
+  double U = 0.0;
+  for (int f = 0; f < mesh_->num_faces(); ++f) U += face_energy(f, edge_folds(x, f), nullptr);
+  return U;
+}
+
+std::vector<double> BendingTerm::face_energies(const Vec3List& x) {
+  compute_normals(x);
+  std::vector<double> U(mesh_->num_faces());
+  for (int f = 0; f < mesh_->num_faces(); ++f) U[f] = face_energy(f, edge_folds(x, f), nullptr);
+  return U;
+}
+
+Eigen::Matrix2d BendingTerm::second_fundamental_form(const Vec3List& x, int f) {
+  compute_normals(x);
+  const Eigen::Vector3d s = edge_folds(x, f);
+  Eigen::Matrix2d b;
+  b << s[0] + s[1], s[0], s[0], s[0] + s[2];
+  return b;
+}
+
+double BendingTerm::omega_max_sq(double vertex_mass) const {
+  // Highest mode: a transverse zig-zag of amplitude w over the smallest altitude h. The folds
+  // are s ~ w, the curvature |S| ~ w / h^2 and the energy ~ B h^2 (w / h^2)^2 per face, so the
+  // stiffness per vertex is k ~ B / h^2 and omega^2 = C_omega B / (m h^2) (i.e. B / (rho t h^4)
+  // per unit areal mass). C_omega bounds the largest eigenvalue of the FD stiffness at rest
+  // (test_bending.cpp: BendingOmega) with a margin.
+  return kOmegaConstant * B_ / (vertex_mass * h_min_ * h_min_);
+}
+
+}  // namespace wirepack

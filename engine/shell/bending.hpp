@@ -1,0 +1,84 @@
+#pragma once
+// Bending energy of the Kirchhoff-Love shell (paper Eq. (2)-(3), DESIGN §3): the change
+// beta = bbar - b of a discrete second fundamental form per triangle,
+//   U_sb = sum_f 1/2 Abar_f B H^{ijkl} beta_ij beta_kl
+//        = sum_f B/2 Abar_f [nu tr(S)^2 + (1 - nu) tr(S^2)],   S = abar^{-1} (b - bbar),
+// with B = M t^2 / 12 and the rest metric abar of the face (the same H as the membrane).
+//
+// Discrete b: midedge-normal shape operator (Grinspun et al. 2006; Chen et al. 2018), in the
+// variant whose edge normal is the normalised average of the two adjacent face normals
+// (libshell's "MidedgeAverage"), so there are no unknowns besides the vertex positions.
+// For face (q0, q1, q2), edge i opposite to vertex i with edge normal n_i, the normal field
+// n(u, v) interpolating n_i at the edge midpoints is linear in the barycentric coordinates,
+// n = sum_i (1 - 2 lambda_i) n_i, and with the face basis e1 = q1 - q0, e2 = q2 - q0,
+//   b_jk = e_j . d_k n,   d_u n = 2 (n0 - n1),  d_v n = 2 (n0 - n2).
+// Each n_i is perpendicular to edge i (both face normals are), which makes b symmetric and
+//   b = [[s0 + s1, s0], [s0, s0 + s2]],   s_i = n_i . (q_{i+1} + q_{i+2} - 2 q_i)   [m],
+// positive for a convex surface with outward normals (a sphere of radius R: b ~ a / R).
+// In Cartesian form s_i M_i = (s_i / h_i^2) nu_i nu_i^T with h_i the altitude from vertex i and
+// nu_i the in-plane unit normal of edge i: s_i / h_i^2 ~ 2 tan(theta_i / 2) / h_i measures the
+// fold across edge i, and the trace term couples the folds of the three edges (Poisson).
+//
+// Boundary edges (one adjacent face): if both end vertices are clamped, the edge normal is
+// held at the rest normal of its face (a clamped edge: zero slope, the rotation is held);
+// otherwise it is the face's own current normal, so s_i = 0 (a free edge carries no moment).
+#include <memory>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "engine/shell/shell_term.hpp"
+
+namespace wirepack {
+
+class BendingTerm : public ShellTerm {
+ public:
+  BendingTerm(std::shared_ptr<const ShellMesh> mesh, const ShellMaterial& material);
+  std::string name() const override { return "shell_bending"; }
+  double accumulate(const Vec3List& x, Vec3List& f) override;
+  double energy(const Vec3List& x) override;
+  // Zig-zag (checkerboard) transverse mode: omega^2 = C_omega B / (m h_min^2), see bending.cpp.
+  double omega_max_sq(double vertex_mass) const override;
+
+  // Energy of each face at x (nf) [J]; sums to energy(x). For tests and diagnostics.
+  std::vector<double> face_energies(const Vec3List& x);
+  // Discrete second fundamental form of face f at x, covariant in the basis (q1 - q0,
+  // q2 - q0) [m] (2 x 2, symmetric).
+  Eigen::Matrix2d second_fundamental_form(const Vec3List& x, int f);
+
+  // Dimensionless constant of omega_max_sq (calibrated against the largest eigenvalue of the
+  // finite-difference stiffness, tests/engine/shell/test_bending.cpp).
+  static constexpr double kOmegaConstant = 24.0;
+
+ private:
+  // Edge normal rule: interior (average of the two face normals), free boundary (own face
+  // normal, s = 0), clamped boundary (fixed rest normal of the face).
+  enum class EdgeKind : char { kInterior, kFree, kClamped };
+
+  // Face and edge normals at x, into the work arrays below.
+  void compute_normals(const Vec3List& x);
+  // s_i of face f from the current normals (3).
+  Eigen::Vector3d edge_folds(const Vec3List& x, int f) const;
+  // Energy of face f and dU/ds_i (3) from its folds s (3).
+  double face_energy(int f, const Eigen::Vector3d& s, Eigen::Vector3d* dU_ds) const;
+
+  std::shared_ptr<const ShellMesh> mesh_;
+  double B_;   // bending rigidity M t^2 / 12 [N m]
+  double nu_;  // Poisson ratio [-]
+  std::vector<EdgeKind> edge_kind_;      // (ne)
+  std::vector<Vec3> edge_fixed_normal_;  // rest face normal on clamped boundary edges (ne)
+  std::vector<double> rest_area_;        // Abar (nf) [m^2]
+  std::vector<Eigen::Matrix2d> abar_inv_;  // inverse rest metric, contravariant (nf) [1/m^2]
+  std::vector<Eigen::Matrix2d> bbar_;      // rest second fundamental form (nf) [m]
+  double h_min_ = 0.0;                     // smallest rest altitude of any face [m]
+
+  // Work arrays (per-run state, reused across calls).
+  std::vector<Vec3> face_normal_;  // unit normal N_f (nf)
+  std::vector<double> face_dblarea_;  // |(q1 - q0) x (q2 - q0)| (nf) [m^2]
+  std::vector<Vec3> edge_normal_;  // unit n_e (ne)
+  std::vector<double> edge_mnorm_;  // |N_f0 + N_f1| on interior edges (ne)
+  std::vector<Vec3> grad_edge_normal_;  // dU/dn_e (ne) [J]
+  std::vector<Vec3> grad_face_normal_;  // dU/dN_f (nf) [J]
+};
+
+}  // namespace wirepack
