@@ -43,7 +43,7 @@ struct WireContact {
   double s = 0, t = 0;
   Vec3 normal = Vec3::Zero();
   double delta = 0;
-  double force = 0;      // normal force of the edge pair, net of its share of joint corrections [N]
+  double force = 0;  // normal force of the edge pair, net of its share of joint corrections [N]
 };
 
 class SelfContactTerm : public Term {

@@ -12,9 +12,9 @@ namespace wirepack {
 
 // Triangle mesh of the shell's mid-surface in its rest (stress-free) configuration.
 struct ShellMesh {
-  Vec3List rest;                              // vertex positions (nv) [m]
-  std::vector<std::array<int, 3>> faces;      // counter-clockwise seen from outside (nf)
-  std::vector<char> clamped;                  // 1 for vertices held fixed (nv)
+  Vec3List rest;                          // vertex positions (nv) [m]
+  std::vector<std::array<int, 3>> faces;  // counter-clockwise seen from outside (nf)
+  std::vector<char> clamped;              // 1 for vertices held fixed (nv)
   // Unique edges (ne): vertex pair (v0 < v1) and the two adjacent faces (-1 on a boundary).
   std::vector<std::array<int, 2>> edges;
   std::vector<std::array<int, 2>> edge_faces;
@@ -28,9 +28,9 @@ struct ShellMesh {
 };
 
 struct ShellMaterial {
-  double E = 0;    // Young's modulus E_s [Pa]
-  double nu = 0;   // Poisson ratio nu_s [-]
-  double t = 0;    // thickness [m]
+  double E = 0;                                         // Young's modulus E_s [Pa]
+  double nu = 0;                                        // Poisson ratio nu_s [-]
+  double t = 0;                                         // thickness [m]
   double M() const { return E * t / (1.0 - nu * nu); }  // membrane rigidity (paper)
   double B() const { return M() * t * t / 12.0; }       // bending rigidity (paper)
 };

@@ -1,11 +1,11 @@
 // Finite-difference checks of the rod energies at random states (STYLE §3).
 #include <gtest/gtest.h>
 
+#include "engine/fd_harness.hpp"
 #include "engine/rod/bend.hpp"
 #include "engine/rod/material.hpp"
 #include "engine/rod/stretch.hpp"
 #include "engine/rod/twist.hpp"
-#include "engine/fd_harness.hpp"
 
 namespace wirepack {
 namespace {
