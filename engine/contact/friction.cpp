@@ -20,15 +20,27 @@ Vec3 FrictionHistory::force(ContactKey k, const Vec3& n, double F_n, double k_n,
   auto it = map_.find(key);
   if (it == map_.end()) {
     Entry e;
-    // Inherit the spring of a neighbouring pair whose contact has just opened.
-    for (int i = 0; i < num_neighbours; ++i) {
+    // A new contact takes over the spring of a neighbouring pair whose contact has just
+    // opened (the contact point moved across an element boundary); failing that, it starts
+    // in the state of a neighbouring pair that is still touching (the same contact region
+    // spread over two pairs), with the force scaled to its own normal load.
+    const Entry* still = nullptr;
+    bool moved = false;
+    for (int i = 0; i < num_neighbours && !moved; ++i) {
       const std::uint64_t nk = neighbours[i].packed();
-      auto old = map_.find(nk);
-      if (old != map_.end() && !seen_this_trial(nk) && old->second.trial != trial_) {
+      const auto old = map_.find(nk);
+      if (old == map_.end()) continue;
+      if (!seen_this_trial(nk)) {
         e.F = old->second.F;
         e.sliding = old->second.sliding;
-        break;
+        moved = true;
+      } else if (!still) {
+        still = &old->second;
       }
+    }
+    if (!moved && still && still->Fn > 0.0) {
+      e.F = still->F * (F_n / still->Fn);
+      e.sliding = still->sliding;
     }
     it = map_.emplace(key, e).first;
   }
@@ -63,6 +75,7 @@ Vec3 FrictionHistory::force(ContactKey k, const Vec3& n, double F_n, double k_n,
   }
   e.F_trial = F;
   e.sliding_trial = sliding;
+  e.Fn_trial = F_n;
   e.trial = trial_;
   slipping_ += sliding ? 1 : 0;
   return total;
@@ -77,6 +90,7 @@ void FrictionHistory::commit() {
     }
     e.F = e.F_trial;
     e.sliding = e.sliding_trial;
+    e.Fn = e.Fn_trial;
     ++it;
   }
 }

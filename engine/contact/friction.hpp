@@ -11,7 +11,8 @@
 // Hertz normal stiffness k_n = dF_n/d delta. A history entry is dropped when its contact opens;
 // a new contact first inherits the entry of a neighbouring element pair that has just opened,
 // so a wire sliding along another wire or the wall keeps its stick state across element
-// boundaries.
+// boundaries; a new contact next to one that is still touching (one contact region shared by
+// two pairs) starts in that pair's state, its force scaled by the ratio of normal loads.
 //
 // The history is transactional: evaluate() writes trial values for the step being tried;
 // commit() makes the trial of the accepted step the new state and drops contacts that were not
@@ -74,8 +75,10 @@ class FrictionHistory {
 
  private:
   struct Entry {
-    Vec3 F = Vec3::Zero();        // committed tangential force on A [N]
-    bool sliding = false;         // committed state
+    Vec3 F = Vec3::Zero();  // committed tangential force on A [N]
+    bool sliding = false;   // committed state
+    double Fn = 0;          // committed normal force [N]
+    double Fn_trial = 0;
     Vec3 F_trial = Vec3::Zero();  // value in the current trial
     bool sliding_trial = false;
     long trial = -1;  // last trial that evaluated this contact

@@ -49,36 +49,12 @@ void SelfContactTerm::rebuild(const RodState& s) {
   }
 }
 
-int SelfContactTerm::find_contact(int a, int b) const {
-  const auto it = std::lower_bound(contacts_.begin(), contacts_.end(), std::make_pair(a, b),
-                                   [](const WireContact& c, const std::pair<int, int>& k) {
-                                     return std::make_pair(c.a, c.b) < k;
-                                   });
-  return it != contacts_.end() && it->a == a && it->b == b
-             ? static_cast<int>(it - contacts_.begin())
-             : -1;
-}
-
-namespace {
-
-// Parameter of the point of segment [b0, b1] closest to x, in [0, 1].
-double closest_on_segment(const Vec3& x, const Vec3& b0, const Vec3& b1) {
-  const Vec3 d = b1 - b0;
-  const double dd = d.squaredNorm();
-  if (dd == 0.0) return 0.0;
-  return std::clamp((x - b0).dot(d) / dd, 0.0, 1.0);
-}
-
-}  // namespace
-
 double SelfContactTerm::evaluate(const RodState& s, RodForces* out) {
   maybe_rebuild(s);
-  const int ne = active_edges(s);
   const double contact = 2.0 * p_.r;
   const double m_eff = 0.5 * p_.node_mass;
   double U = 0.0;
   contacts_.clear();
-  // Edge pairs: capsule against capsule (candidates are sorted, so contacts_ is too).
   for (const auto& [a, b] : candidates_) {
     const Vec3 &a0 = s.x[a], &a1 = s.x[a + 1], &b0 = s.x[b], &b1 = s.x[b + 1];
     const SegmentClosest c = segment_segment_closest(a0, a1, b0, b1);
@@ -95,90 +71,17 @@ double SelfContactTerm::evaluate(const RodState& s, RodForces* out) {
     }
     WireContact w{a, b, c.s, c.t, n, contact - dist, 0.0};
     U += hertz_.energy(w.delta);
+    if (out) {
+      const Vec3 va = (1.0 - c.s) * s.v[a] + c.s * s.v[a + 1];
+      const Vec3 vb = (1.0 - c.t) * s.v[b] + c.t * s.v[b + 1];
+      w.force = damped_normal_force(hertz_, w.delta, -(va - vb).dot(n), p_.damping_ratio, m_eff);
+      const Vec3 F = w.force * n;  // on edge a; -F on edge b
+      out->f[a] += (1.0 - c.s) * F;
+      out->f[a + 1] += c.s * F;
+      out->f[b] -= (1.0 - c.t) * F;
+      out->f[b + 1] -= c.t * F;
+    }
     contacts_.push_back(w);
-  }
-  if (out) {
-    for (WireContact& c : contacts_) {
-      const Vec3 va = (1.0 - c.s) * s.v[c.a] + c.s * s.v[c.a + 1];
-      const Vec3 vb = (1.0 - c.t) * s.v[c.b] + c.t * s.v[c.b + 1];
-      c.force =
-          damped_normal_force(hertz_, c.delta, -(va - vb).dot(c.normal), p_.damping_ratio, m_eff);
-      const Vec3 F = c.force * c.normal;
-      out->f[c.a] += (1.0 - c.s) * F;
-      out->f[c.a + 1] += c.s * F;
-      out->f[c.b] -= (1.0 - c.t) * F;
-      out->f[c.b + 1] -= c.t * F;
-    }
-  }
-  // Joint corrections (inclusion-exclusion), each owned by the pair (a, b) at its lower-left:
-  // the ball of joint a+1 against edge b and the ball of joint b+1 against edge a are
-  // subtracted, the two balls against each other added back. A correction only matters where
-  // the pair (a, b) itself touches (a ball is inside its edge's capsule).
-  const size_t num_pairs = contacts_.size();
-  for (size_t k = 0; k < num_pairs; ++k) {
-    const int a = contacts_[k].a, b = contacts_[k].b;
-    const bool ja = pair_valid(a + 1, b, ne);  // joint a+1 is shared by pairs (a,b), (a+1,b)
-    const bool jb = b + 1 < ne;                // joint b+1 is shared by pairs (a,b), (a,b+1)
-    struct Part {
-      int node;        // the joint node
-      int e0, e1;      // the edge it is checked against (nodes e0, e0+1) or, for ball-ball, -1
-      int other;       // ball-ball: the other joint node
-      double sign;     // -1 subtract, +1 add back
-      int k2, k3, k4;  // the other pairs that share this correction
-    };
-    Part parts[3];
-    int np = 0;
-    if (ja) parts[np++] = Part{a + 1, b, b + 1, -1, -1.0, find_contact(a + 1, b), -1, -1};
-    if (jb) parts[np++] = Part{b + 1, a, a + 1, -1, -1.0, find_contact(a, b + 1), -1, -1};
-    if (ja && jb && pair_valid(a + 1, b + 1, ne)) {
-      parts[np++] = Part{a + 1,
-                         -1,
-                         -1,
-                         b + 1,
-                         +1.0,
-                         find_contact(a + 1, b),
-                         find_contact(a, b + 1),
-                         find_contact(a + 1, b + 1)};
-    }
-    for (int q = 0; q < np; ++q) {
-      const Part& pt = parts[q];
-      const Vec3& x = s.x[pt.node];
-      double t = 0.0;
-      Vec3 y;  // the closest point of the other body [m]
-      Vec3 vy;
-      if (pt.e0 >= 0) {
-        t = closest_on_segment(x, s.x[pt.e0], s.x[pt.e1]);
-        y = s.x[pt.e0] + t * (s.x[pt.e1] - s.x[pt.e0]);
-        vy = (1.0 - t) * s.v[pt.e0] + t * s.v[pt.e1];
-      } else {
-        y = s.x[pt.other];
-        vy = s.v[pt.other];
-      }
-      const Vec3 d = x - y;
-      const double dist2 = d.squaredNorm();
-      if (dist2 >= contact * contact || dist2 == 0.0) continue;
-      const double dist = std::sqrt(dist2);
-      const double delta = contact - dist;
-      U += pt.sign * hertz_.energy(delta);
-      if (!out) continue;
-      const Vec3 n = d / dist;
-      const double f =
-          damped_normal_force(hertz_, delta, -(s.v[pt.node] - vy).dot(n), p_.damping_ratio, m_eff);
-      const Vec3 F = pt.sign * f * n;  // on the joint node; -F on the other body
-      out->f[pt.node] += F;
-      if (pt.e0 >= 0) {
-        out->f[pt.e0] -= (1.0 - t) * F;
-        out->f[pt.e1] -= t * F;
-      } else {
-        out->f[pt.other] -= F;
-      }
-      // Share the correction among the pairs it belongs to (their friction bounds).
-      const int ks[4] = {static_cast<int>(k), pt.k2, pt.k3, pt.k4};
-      const int owners = pt.e0 >= 0 ? 2 : 4;
-      for (int o = 0; o < owners; ++o) {
-        if (ks[o] >= 0) contacts_[ks[o]].force += pt.sign * f / owners;
-      }
-    }
   }
   return U;
 }

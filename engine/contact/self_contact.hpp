@@ -7,13 +7,15 @@
 // bent wire does not repel itself. Normal force: Hertz with E* = E_w / (2 (1 - nu_w^2)) and the
 // crossed-cylinders radius R* = r.
 //
-// The wire is a chain of capsules, and two consecutive capsules overlap in the ball around
-// their shared node. Summing the contacts of every edge pair would count a wire lying across a
-// joint twice (a bump in the normal force, and in the friction bound, at every element
-// boundary a wire slides over). The energy therefore follows inclusion-exclusion over the
-// union of capsules: pairs of edges, minus (joint ball, edge) pairs, plus (joint ball, joint
-// ball) pairs. For straight chains this is exact; it is continuous everywhere (no contact
-// appears or vanishes with a finite energy) and never negative.
+// Every touching pair of edges is one Hertz point contact (the per-element-pair model: the
+// force of a line contact grows with its length, and the energy is continuous). Consecutive
+// capsules overlap around their shared node, so where a wire crosses a joint of the other, two
+// pairs share the crossing (within sqrt(4 r delta) of the joint), and aligned parallel wires
+// touch in up to three pairs per element (two when staggered): the contact stiffness is
+// modulated at the element scale. Schemes that count each contact point once (local minima
+// of the distance) drop contacts abruptly where a minimum merges with a joint, which happens
+// at every element boundary of a curved coil, and inclusion-exclusion over the union of
+// capsules collapses a whole line contact into one; both were tried and rejected.
 #include <memory>
 #include <utility>
 #include <vector>
@@ -43,7 +45,7 @@ struct WireContact {
   double s = 0, t = 0;
   Vec3 normal = Vec3::Zero();
   double delta = 0;
-  double force = 0;  // normal force of the edge pair, net of its share of joint corrections [N]
+  double force = 0;  // normal force [N]
 };
 
 class SelfContactTerm : public Term {
@@ -54,7 +56,7 @@ class SelfContactTerm : public Term {
   double energy(const RodState& s) override;
   double omega_max_sq(const RodInertia& inertia) const override;
 
-  // N of DESIGN §4: edge pairs whose capsules overlap.
+  // N of DESIGN §4: touching edge pairs.
   int contacts() const { return static_cast<int>(contacts_.size()); }
   const std::vector<WireContact>& contact_list() const { return contacts_; }
   void begin_trial(double dt) override {
@@ -72,10 +74,8 @@ class SelfContactTerm : public Term {
   // Number of edges that take part: those with at least one dynamic node.
   static int active_edges(const RodState& s) { return std::min(s.n_free, s.num_edges()); }
   void maybe_rebuild(const RodState& s);
-  // Energy of the union of capsules; with `out`, also forces and the contact list.
+  // Energy of all touching pairs; with `out`, also forces and the contact list.
   double evaluate(const RodState& s, RodForces* out);
-  bool pair_valid(int a, int b, int ne) const { return a >= 0 && b < ne && b - a > exclude_; }
-  int find_contact(int a, int b) const;
   void rebuild(const RodState& s);
 
   SelfContactParams p_;
@@ -88,7 +88,7 @@ class SelfContactTerm : public Term {
   Vec3List x_at_build_;
   int edges_at_build_ = -1;
   long rebuilds_ = 0;
-  std::vector<WireContact> contacts_;  // sorted by (a, b)
+  std::vector<WireContact> contacts_;
   double max_stiffness_ = 0;
   std::unique_ptr<FrictionHistory> friction_;  // null when mu_s = 0 (no history, no torques)
 };

@@ -1,0 +1,243 @@
+#include "engine/contact/wire_shell.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "engine/contact/segment_distance.hpp"
+#include "engine/contact/triangle_distance.hpp"
+
+namespace wirepack {
+
+WireShellTerm::WireShellTerm(const ShellMesh& mesh, const WireShellParams& p)
+    : mesh_(mesh), p_(p), hertz_(Hertz::from(p.E_star, p.r)) {
+  vertex_faces_.resize(mesh.num_vertices());
+  for (int f = 0; f < mesh.num_faces(); ++f) {
+    for (int v : mesh.faces[f]) vertex_faces_[v].push_back(f);
+  }
+  // Boundary pieces (the rim of the hole): an edge of one face only, and its vertices.
+  boundary_vertex_.assign(mesh.num_vertices(), 0);
+  for (size_t k = 0; k < mesh.edges.size(); ++k) {
+    if (mesh.edge_faces[k][1] < 0)
+      boundary_vertex_[mesh.edges[k][0]] = boundary_vertex_[mesh.edges[k][1]] = 1;
+  }
+  if (p.friction.enabled()) friction_ = std::make_unique<FrictionHistory>(p.friction);
+}
+
+void WireShellTerm::maybe_rebuild(const RodState& s) {
+  const int ne = active_edges(s);
+  bool need = ne != edges_at_build_;
+  const double limit2 = 0.25 * p_.skin * p_.skin;
+  if (!need) {
+    const int nn = std::min(ne + 1, s.num_nodes());
+    for (int i = 0; i < nn && !need; ++i) need = (s.x[i] - x_at_build_[i]).squaredNorm() > limit2;
+    for (size_t k = 0; k < s.shell_x.size() && !need; ++k) {
+      need = (s.shell_x[k] - shell_at_build_[k]).squaredNorm() > limit2;
+    }
+  }
+  if (need) rebuild(s);
+}
+
+void WireShellTerm::rebuild(const RodState& s) {
+  const int ne = active_edges(s);
+  const int nf = mesh_.num_faces();
+  ++rebuilds_;
+  edges_at_build_ = ne;
+  x_at_build_.assign(s.x.begin(), s.x.begin() + std::min(ne + 1, s.num_nodes()));
+  shell_at_build_ = s.shell_x;
+  candidates_.clear();
+  if (ne < 1 || nf == 0) return;
+  points_.resize(ne + nf);
+  double lmax = 0.0;
+  for (int e = 0; e < ne; ++e) {
+    points_[e] = 0.5 * (s.x[e] + s.x[e + 1]);
+    lmax = std::max(lmax, (s.x[e + 1] - s.x[e]).norm());
+  }
+  face_reach_ = 0.0;
+  for (int f = 0; f < nf; ++f) {
+    const auto& v = mesh_.faces[f];
+    const Vec3 c = (s.shell_x[v[0]] + s.shell_x[v[1]] + s.shell_x[v[2]]) / 3.0;
+    points_[ne + f] = c;
+    for (int k = 0; k < 3; ++k) face_reach_ = std::max(face_reach_, (s.shell_x[v[k]] - c).norm());
+  }
+  const double reach = p_.r + p_.half_thickness + p_.skin;
+  grid_.find_pairs(points_, 0.5 * lmax + face_reach_ + reach, broad_);
+  for (const auto& [i, j] : broad_) {
+    if (i >= ne || j < ne) continue;  // only (wire edge, face) pairs
+    const int e = i, f = j - ne;
+    const auto& v = mesh_.faces[f];
+    const TriangleClosest c = segment_triangle_closest(s.x[e], s.x[e + 1], s.shell_x[v[0]],
+                                                       s.shell_x[v[1]], s.shell_x[v[2]]);
+    if (c.dist2 < reach * reach) candidates_.emplace_back(e, f);
+  }
+  std::sort(candidates_.begin(), candidates_.end());
+}
+
+int WireShellTerm::find_face_pair(int e, int f) const {
+  const auto it = std::lower_bound(
+      face_pairs_.begin(), face_pairs_.end(), std::make_pair(e, f),
+      [](const FacePair& c, const std::pair<int, int>& k) { return std::make_pair(c.e, c.f) < k; });
+  return it != face_pairs_.end() && it->e == e && it->f == f
+             ? static_cast<int>(it - face_pairs_.begin())
+             : -1;
+}
+
+namespace {
+
+// A piece of the wire (an edge, or an interior node) or of the shell (a face, an edge, a
+// vertex): up to three points with weights.
+struct Piece {
+  int idx[3] = {-1, -1, -1};
+  int count = 0;
+};
+
+}  // namespace
+
+double WireShellTerm::evaluate(const RodState& s, RodForces* out) {
+  maybe_rebuild(s);
+  const double Dc = p_.r + p_.half_thickness;
+  const double m_eff = 1.0 / (1.0 / p_.node_mass + 1.0 / p_.vertex_mass);
+  double U = 0.0;
+  face_pairs_.clear();
+
+  // Applies one signed contact between wire point P (weights ww on wire nodes wi) and shell
+  // point Q (weights ws on shell vertices si); returns the signed normal force [N] or 0.
+  auto contact = [&](const Vec3& P, const Vec3& Q, const Vec3& fallback_n, const int* wi,
+                     const double* ww, int nw, const int* si, const double* ws, int ns, double sign,
+                     Vec3* normal, double* overlap) -> double {
+    const Vec3 d = P - Q;
+    const double dist2 = d.squaredNorm();
+    if (dist2 >= Dc * Dc) return 0.0;
+    const double dist = std::sqrt(dist2);
+    const Vec3 n = dist > 1e-12 * p_.r ? Vec3(d / dist) : fallback_n;
+    const double delta = Dc - dist;
+    U += sign * hertz_.energy(delta);
+    if (normal) *normal = n;
+    if (overlap) *overlap = delta;
+    if (!out) return sign * hertz_.force(delta);
+    Vec3 vw = Vec3::Zero(), vs = Vec3::Zero();
+    for (int k = 0; k < nw; ++k) vw += ww[k] * s.v[wi[k]];
+    for (int k = 0; k < ns; ++k) vs += ws[k] * s.shell_v[si[k]];
+    const double f = damped_normal_force(hertz_, delta, -(vw - vs).dot(n), p_.damping_ratio, m_eff);
+    const Vec3 F = sign * f * n;  // on the wire; -F on the shell
+    for (int k = 0; k < nw; ++k) out->f[wi[k]] += ww[k] * F;
+    for (int k = 0; k < ns; ++k) out->shell_f[si[k]] -= ws[k] * F;
+    return sign * f;
+  };
+
+  // (wire edge, face): the primary contacts.
+  for (const auto& [e, f] : candidates_) {
+    const auto& v = mesh_.faces[f];
+    const Vec3 &a = s.shell_x[v[0]], &b = s.shell_x[v[1]], &c = s.shell_x[v[2]];
+    const TriangleClosest tc = segment_triangle_closest(s.x[e], s.x[e + 1], a, b, c);
+    if (tc.dist2 >= Dc * Dc) continue;
+    const Vec3 P = s.x[e] + tc.s * (s.x[e + 1] - s.x[e]);
+    const Vec3 Q = tc.w[0] * a + tc.w[1] * b + tc.w[2] * c;
+    Vec3 fn = (b - a).cross(c - a).normalized();
+    if (fn.dot(P - (a + b + c) / 3.0) < 0) fn = -fn;
+    const int wi[2] = {e, e + 1};
+    const double ww[2] = {1.0 - tc.s, tc.s};
+    FacePair fp{e, f, tc.s, tc.w, Vec3::Zero(), 0.0, 0.0};
+    fp.force = contact(P, Q, fn, wi, ww, 2, v.data(), tc.w.data(), 3, +1.0, &fp.n, &fp.delta);
+    face_pairs_.push_back(fp);
+  }
+
+  // Corrections of inclusion-exclusion, each shared by the face pairs it belongs to.
+  auto share = [&](double signed_force, const int* wire_edges, int n_we, const int* faces,
+                   int n_f) {
+    if (signed_force == 0.0) return;
+    int owners[16];
+    int n_own = 0;
+    for (int i = 0; i < n_we; ++i) {
+      for (int j = 0; j < n_f; ++j) {
+        const int k = find_face_pair(wire_edges[i], faces[j]);
+        if (k >= 0 && n_own < 16) owners[n_own++] = k;
+      }
+    }
+    for (int i = 0; i < n_own; ++i) face_pairs_[owners[i]].force += signed_force / n_own;
+  };
+  // Unique (wire edge, shell edge) and (wire edge, shell vertex) pairs near the candidates.
+  std::vector<std::pair<int, int>> seg_edge, seg_vert;
+  for (const auto& [e, f] : candidates_) {
+    // Inclusion-exclusion over the slabs: an edge is the overlap of its two faces, an
+    // interior vertex the overlap of its closed fan; the rim's pieces overlap nothing.
+    for (int k = 0; k < 3; ++k) {
+      const int ek = mesh_.face_edges[f][k], vk = mesh_.faces[f][k];
+      if (mesh_.edge_faces[ek][1] >= 0) seg_edge.emplace_back(e, ek);
+      if (!boundary_vertex_[vk]) seg_vert.emplace_back(e, vk);
+    }
+  }
+  for (auto* list : {&seg_edge, &seg_vert}) {
+    std::sort(list->begin(), list->end());
+    list->erase(std::unique(list->begin(), list->end()), list->end());
+  }
+  const Vec3 no_n = Vec3::UnitZ();       // only for exactly coincident points (measure zero)
+  for (const auto& [e, k] : seg_edge) {  // - (wire edge, shell edge)
+    const int v0 = mesh_.edges[k][0], v1 = mesh_.edges[k][1];
+    const SegmentClosest c =
+        segment_segment_closest(s.x[e], s.x[e + 1], s.shell_x[v0], s.shell_x[v1]);
+    const int wi[2] = {e, e + 1}, si[2] = {v0, v1};
+    const double ww[2] = {1 - c.s, c.s}, ws[2] = {1 - c.t, c.t};
+    const double f = contact(s.x[e] + c.s * (s.x[e + 1] - s.x[e]),
+                             s.shell_x[v0] + c.t * (s.shell_x[v1] - s.shell_x[v0]), no_n, wi, ww, 2,
+                             si, ws, 2, -1.0, nullptr, nullptr);
+    const auto& ef = mesh_.edge_faces[k];
+    const int faces[2] = {ef[0], ef[1]};
+    share(f, &e, 1, faces, ef[1] >= 0 ? 2 : 1);
+  }
+  for (const auto& [e, vtx] : seg_vert) {  // + (wire edge, shell vertex)
+    const Vec3& Q = s.shell_x[vtx];
+    const Vec3 d = s.x[e + 1] - s.x[e];
+    const double dd = d.squaredNorm();
+    const double t = dd > 0 ? std::clamp((Q - s.x[e]).dot(d) / dd, 0.0, 1.0) : 0.0;
+    const int wi[2] = {e, e + 1};
+    const double ww[2] = {1 - t, t}, one = 1.0;
+    const double f =
+        contact(s.x[e] + t * d, Q, no_n, wi, ww, 2, &vtx, &one, 1, +1.0, nullptr, nullptr);
+    const auto& vf = vertex_faces_[vtx];
+    share(f, &e, 1, vf.data(), static_cast<int>(vf.size()));
+  }
+  return U;
+}
+
+double WireShellTerm::accumulate(const RodState& s, RodForces& out) {
+  const double U = evaluate(s, &out);
+  double kmax = 0.0;
+  for (const FacePair& c : face_pairs_) kmax = std::max(kmax, hertz_.stiffness(c.delta));
+  max_stiffness_ = kmax * (friction_ ? 1.0 + p_.friction.stiffness_ratio : 1.0);
+  if (!friction_) return U;
+  for (const FacePair& c : face_pairs_) friction_->mark(ContactKey{c.e, c.f});
+  friction_->finish_marking();
+  const bool twist = s.has_twist();
+  const double r = p_.r;
+  const double m_eff = 1.0 / (1.0 / p_.node_mass + 1.0 / p_.vertex_mass);
+  for (const FacePair& c : face_pairs_) {
+    const int e = c.e;
+    const auto& v = mesh_.faces[c.f];
+    Vec3 v_rel = (1.0 - c.s) * s.v[e] + c.s * s.v[e + 1];
+    for (int k = 0; k < 3; ++k) v_rel -= c.w[k] * s.shell_v[v[k]];
+    Vec3 te = Vec3::Zero();
+    if (twist) {
+      te = (s.x[e + 1] - s.x[e]).normalized();
+      v_rel += s.omega[e] * te.cross(-r * c.n);  // the wire's surface point at -r n
+    }
+    // Neighbours for history transfer: the next edges along the wire, the faces across.
+    ContactKey nb[5] = {{e + 1, c.f}, {e - 1, c.f}, {e, -1}, {e, -1}, {e, -1}};
+    for (int k = 0; k < 3; ++k) {
+      const auto& ef = mesh_.edge_faces[mesh_.face_edges[c.f][k]];
+      nb[2 + k].b = ef[0] == c.f ? ef[1] : ef[0];
+    }
+    const Vec3 ft = friction_->force(ContactKey{e, c.f}, c.n, std::max(c.force, 0.0),
+                                     hertz_.stiffness(c.delta), v_rel, m_eff, nb, 5);
+    out.f[e] += (1.0 - c.s) * ft;
+    out.f[e + 1] += c.s * ft;
+    for (int k = 0; k < 3; ++k) out.shell_f[v[k]] -= c.w[k] * ft;
+    if (twist) out.torque[e] += (-r * c.n).cross(ft).dot(te);
+  }
+  return U;
+}
+
+double WireShellTerm::omega_max_sq(const RodInertia&) const {
+  return 2.0 * max_stiffness_ / std::min(p_.node_mass, p_.vertex_mass);
+}
+
+}  // namespace wirepack

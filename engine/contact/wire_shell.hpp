@@ -1,0 +1,95 @@
+#pragma once
+// Contact of the wire (capsules of radius r around its edges) with the elastic shell
+// (triangles thickened by the half-thickness h = t/2), Engine III.
+//
+// The shell is a union of overlapping slabs: neighbouring faces share their edge and vertex
+// regions. Counting every (wire edge, face) pair would press twice where the wire lies over a
+// shell edge and three to six times over a vertex, a modulation at the scale of the mesh. The
+// shell side is therefore taken by inclusion-exclusion:
+//   U = sum over wire edges e of [ sum_faces U_H - sum_edges U_H + sum_vertices U_H ](e),
+// over the faces near e, the edges shared by two of them and the vertices inside a closed fan
+// (the rim of the hole overlaps nothing); for a flat patch this is exactly one contact per
+// wire edge, and continuous as the contact slides over the mesh. The wire side is per edge, as
+// in the self-contact (a line contact's force grows with its length). Normal force: Hertz with
+// R* = r and 1/E* = (1 - nu_w^2)/E_w + (1 - nu_s^2)/E_s, plus a normal dashpot. Friction
+// (the Engine II mechanism) acts on the (edge, face) pairs, each bounded by its share of the
+// net normal force. Forces go to the wire nodes by the segment parameter and to the shell
+// vertices by barycentric weights (action = reaction).
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include "engine/contact/cell_grid.hpp"
+#include "engine/contact/friction.hpp"
+#include "engine/contact/hertz.hpp"
+#include "engine/shell/shell_term.hpp"
+#include "engine/term.hpp"
+
+namespace wirepack {
+
+struct WireShellParams {
+  double r = 0;               // wire radius [m]
+  double half_thickness = 0;  // h = t / 2 [m]
+  double E_star = 0;          // effective modulus [Pa]
+  double skin = 0;            // Verlet-list margin [m]
+  double damping_ratio = 0;   // normal dashpot ratio [-]
+  double node_mass = 0;       // wire node mass [kg]
+  double vertex_mass = 0;     // shell vertex mass [kg]
+  FrictionParams friction;    // off when mu_s = 0
+};
+
+class WireShellTerm : public Term {
+ public:
+  WireShellTerm(const ShellMesh& mesh, const WireShellParams& p);
+  std::string name() const override { return "wire_shell"; }
+  double accumulate(const RodState& s, RodForces& out) override;
+  double energy(const RodState& s) override { return evaluate(s, nullptr); }
+  double omega_max_sq(const RodInertia& inertia) const override;
+  void begin_trial(double dt) override {
+    if (friction_) friction_->begin_trial(dt);
+  }
+  void commit() override {
+    if (friction_) friction_->commit();
+  }
+  bool has_friction() const override { return friction_ != nullptr; }
+
+  // (wire edge, face) pairs whose pieces overlap at the last accumulate.
+  int contacts() const { return static_cast<int>(face_pairs_.size()); }
+  long rebuilds() const { return rebuilds_; }
+
+ private:
+  // One (wire edge, face) pair in contact: closest points, normal (from shell to wire), overlap
+  // and its net normal force (after its share of the corrections) [N].
+  struct FacePair {
+    int e, f;
+    double s;
+    std::array<double, 3> w;
+    Vec3 n;
+    double delta;
+    double force;
+  };
+  double evaluate(const RodState& s, RodForces* out);
+  void maybe_rebuild(const RodState& s);
+  void rebuild(const RodState& s);
+  int active_edges(const RodState& s) const { return std::min(s.n_free, s.num_edges()); }
+  int find_face_pair(int e, int f) const;
+
+  const ShellMesh& mesh_;
+  WireShellParams p_;
+  Hertz hertz_;
+  std::vector<std::vector<int>> vertex_faces_;  // faces around each vertex
+  std::vector<char> boundary_vertex_;           // 1 on the rim of the hole
+  CellGrid grid_;
+  Vec3List points_;
+  std::vector<std::pair<int, int>> broad_;
+  std::vector<std::pair<int, int>> candidates_;  // (wire edge, face), sorted
+  Vec3List x_at_build_, shell_at_build_;
+  int edges_at_build_ = -1;
+  long rebuilds_ = 0;
+  double face_reach_ = 0;  // largest distance from a face centroid to its vertices [m]
+  std::vector<FacePair> face_pairs_;
+  double max_stiffness_ = 0;
+  std::unique_ptr<FrictionHistory> friction_;
+};
+
+}  // namespace wirepack

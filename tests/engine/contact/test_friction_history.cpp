@@ -1,0 +1,101 @@
+// The friction history itself: rotation into the tangent plane, stick/slip bounds, transfer of
+// the spring when a contact moves to a neighbouring element pair, and transactions.
+#include <gtest/gtest.h>
+
+#include "engine/contact/friction.hpp"
+
+namespace wirepack {
+namespace {
+
+FrictionParams params() {
+  FrictionParams p;
+  p.mu_s = 0.5;
+  p.mu_d = 0.45;
+  p.stiffness_ratio = 0.8;
+  p.damping_ratio = 0.0;
+  return p;
+}
+
+const Vec3 kN(0, 0, 1);  // contact normal
+constexpr double kFn = 1.0, kKn = 1000.0, kM = 1e-3;
+
+// Loads contact `k` with a tangential spring force by sliding at v for one step of dt.
+Vec3 step(FrictionHistory& h, ContactKey k, const Vec3& v, double dt, double Fn = kFn,
+          const std::vector<ContactKey>& nb = {}) {
+  h.begin_trial(dt);
+  h.mark(k);
+  h.finish_marking();
+  const Vec3 f = h.force(k, kN, Fn, kKn, v, kM, nb.data(), static_cast<int>(nb.size()));
+  h.commit();
+  return f;
+}
+
+TEST(FrictionHistory, SpringSticksThenSlipsAtTheDynamicBound) {
+  FrictionHistory h(params());
+  const ContactKey k{1, 5};
+  // k_t v dt = 800 * 1e-4 * 1 = 0.08 N per step along -x.
+  Vec3 f;
+  for (int i = 0; i < 6; ++i) f = step(h, k, Vec3(1e-4, 0, 0), 1.0);
+  EXPECT_NEAR(f[0], -0.48, 1e-12);        // still below mu_s F_n = 0.5: stick
+  f = step(h, k, Vec3(1e-4, 0, 0), 1.0);  // 0.56 > 0.5: slip at mu_d F_n
+  EXPECT_NEAR(f[0], -0.45, 1e-12);
+  EXPECT_EQ(h.slipping(), 1);
+  f = step(h, k, Vec3(1e-4, 0, 0), 1.0);  // still sliding: bound mu_d
+  EXPECT_NEAR(f[0], -0.45, 1e-12);
+  f = step(h, k, Vec3(-1e-4, 0, 0), 1.0);  // reversal: spring relaxes below mu_d, sticks
+  EXPECT_NEAR(f[0], -0.37, 1e-12);
+  EXPECT_EQ(h.slipping(), 0);
+}
+
+TEST(FrictionHistory, RotatesIntoTheNewTangentPlaneKeepingMagnitude) {
+  FrictionHistory h(params());
+  const ContactKey k{1, 5};
+  step(h, k, Vec3(1e-4, 0, 0), 1.0);  // F = (-0.08, 0, 0)
+  h.begin_trial(0.0);
+  h.mark(k);
+  h.finish_marking();
+  const Vec3 n = Vec3(1, 0, 1).normalized();  // the normal has tilted by 45 degrees
+  const Vec3 f = h.force(k, n, kFn, kKn, Vec3::Zero(), kM, nullptr, 0);
+  EXPECT_NEAR(f.dot(n), 0.0, 1e-15);
+  EXPECT_NEAR(f.norm(), 0.08, 1e-12);
+}
+
+TEST(FrictionHistory, ContactMovingToANeighbourPairKeepsItsSpring) {
+  FrictionHistory h(params());
+  for (int i = 0; i < 3; ++i) step(h, ContactKey{1, 5}, Vec3(1e-4, 0, 0), 1.0);  // F = -0.24
+  // (1,5) has opened and (1,6) touches: the spring moves over; a zero-length step adds nothing.
+  const Vec3 f = step(h, ContactKey{1, 6}, Vec3::Zero(), 0.0, kFn, {{1, 5}, {1, 7}});
+  EXPECT_NEAR(f[0], -0.24, 1e-12);
+  EXPECT_EQ(h.size(), 1u);  // the opened contact is gone
+  // Without a neighbour entry, a new contact starts relaxed.
+  const Vec3 g = step(h, ContactKey{9, 20}, Vec3::Zero(), 0.0);
+  EXPECT_EQ(g.norm(), 0.0);
+}
+
+TEST(FrictionHistory, NewPairBesideATouchingOneSharesItsStateByLoad) {
+  FrictionHistory h(params());
+  for (int i = 0; i < 3; ++i) step(h, ContactKey{1, 5}, Vec3(1e-4, 0, 0), 1.0);  // F = -0.24
+  h.begin_trial(0.0);
+  h.mark(ContactKey{1, 5});
+  h.mark(ContactKey{1, 6});
+  h.finish_marking();
+  const ContactKey nb[1] = {{1, 5}};
+  // The new pair carries a quarter of the old pair's normal load: a quarter of its spring.
+  const Vec3 f6 = h.force(ContactKey{1, 6}, kN, 0.25 * kFn, kKn, Vec3::Zero(), kM, nb, 1);
+  EXPECT_NEAR(f6[0], -0.06, 1e-12);
+}
+
+TEST(FrictionHistory, RejectedTrialsLeaveNoTrace) {
+  FrictionHistory h(params());
+  step(h, ContactKey{1, 5}, Vec3(1e-4, 0, 0), 1.0);  // F = -0.08, committed
+  // A trial that is not committed (a rejected step), then the accepted one.
+  h.begin_trial(1.0);
+  h.mark(ContactKey{1, 5});
+  h.finish_marking();
+  h.force(ContactKey{1, 5}, kN, kFn, kKn, Vec3(1e-3, 0, 0), kM, nullptr, 0);
+  const Vec3 f = step(h, ContactKey{1, 5}, Vec3(1e-4, 0, 0), 1.0);
+  EXPECT_NEAR(f[0], -0.16, 1e-12);
+}
+
+}  // namespace
+}  // namespace wirepack

@@ -1,0 +1,132 @@
+// Wire-shell contact: one contact per wire edge wherever it lies on the mesh (inclusion-
+// exclusion over faces, edges and vertices), finite-difference gradient, action = reaction.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "engine/contact/wire_shell.hpp"
+#include "engine/shell/mesh_builders.hpp"
+
+namespace wirepack {
+namespace {
+
+constexpr double kR = 0.5e-3;   // wire radius [m]
+constexpr double kH = 0.25e-3;  // shell half-thickness [m]
+constexpr double kE = 1e9, kNu = 1.0 / 3.0;
+
+WireShellParams params() {
+  WireShellParams p;
+  p.r = kR;
+  p.half_thickness = kH;
+  p.E_star = 1.0 / ((1 - kNu * kNu) / kE + (1 - kNu * kNu) / 1e6);
+  p.skin = 0.5 * kR;
+  p.node_mass = 1e-4;
+  p.vertex_mass = 1e-4;
+  return p;
+}
+
+double hertz_energy(double delta) {
+  const Hertz h = Hertz::from(params().E_star, kR);
+  return h.energy(delta);
+}
+
+// A rod of n nodes from a to b (all dynamic) over a shell mesh.
+RodState wire_over(const ShellMesh& mesh, const Vec3& a, const Vec3& b, int n) {
+  RodState s;
+  for (int i = 0; i < n; ++i) s.x.push_back(a + (b - a) * (double(i) / (n - 1)));
+  s.v.assign(n, Vec3::Zero());
+  for (int j = 0; j + 1 < n; ++j) s.rest_length.push_back((s.x[j + 1] - s.x[j]).norm());
+  s.n_free = n;
+  s.shell_x = mesh.rest;
+  s.shell_v.assign(mesh.rest.size(), Vec3::Zero());
+  return s;
+}
+
+// A straight wire edge lying parallel to a flat shell at overlap delta is one Hertz contact,
+// wherever it lies: over a face, along or across mesh edges, over vertices (1e-9 relative).
+TEST(WireShell, OneContactPerEdgeAnywhereOnAFlatMesh) {
+  const ShellMesh mesh = flat_square(20 * kR, 10);  // 2 r squares, split in two triangles
+  const double delta = 0.02 * kR, z = kR + kH - delta;
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(-4 * kR, 4 * kR), ang(0, M_PI);
+  for (int trial = 0; trial < 50; ++trial) {
+    const Vec3 c(u(rng), u(rng), z);
+    const double t = trial < 3 ? trial * M_PI / 4 : ang(rng);  // incl. along the mesh lines
+    const Vec3 d = kR * Vec3(std::cos(t), std::sin(t), 0);
+    const Vec3 c0 = trial == 1 ? Vec3(0, 0, z) : c;  // exactly over a vertex
+    RodState s = wire_over(mesh, c0 - d, c0 + d, 2);
+    WireShellTerm term(mesh, params());
+    const double U = term.energy(s);
+    EXPECT_NEAR(U / hertz_energy(delta), 1.0, 1e-9) << "trial " << trial;
+  }
+  // Two edges: two contacts (the wire side is per edge).
+  RodState s = wire_over(mesh, Vec3(-1.3 * kR, 0.2 * kR, z), Vec3(1.1 * kR, 0.3 * kR, z), 3);
+  WireShellTerm term(mesh, params());
+  EXPECT_NEAR(term.energy(s) / hertz_energy(delta), 2.0, 1e-9);
+}
+
+// The rim of a hole: a wire edge touching a boundary edge from the side is a contact too
+// (boundary pieces are not subtracted).
+TEST(WireShell, BoundaryEdgeOfTheMeshIsAContact) {
+  const ShellMesh mesh = flat_square(20 * kR, 10);
+  const double L = 10 * kR, delta = 0.02 * kR;
+  // Vertical wire beside the boundary x = L, at distance r + h - delta from it.
+  const double x = L + kR + kH - delta;
+  RodState s = wire_over(mesh, Vec3(x, 0.3 * kR, -kR), Vec3(x, 0.3 * kR, kR), 2);
+  WireShellTerm term(mesh, params());
+  EXPECT_NEAR(term.energy(s) / hertz_energy(delta), 1.0, 1e-9);
+}
+
+// Forces: central differences of the energy in every wire and shell coordinate, on a randomly
+// perturbed mesh with a crumpled wire pressed into it (error O(h^2) until round-off), and the
+// total force is zero (action = reaction).
+TEST(WireShell, GradientMatchesFiniteDifferencesAndBalances) {
+  ShellMesh mesh = flat_square(12 * kR, 6);
+  std::mt19937_64 rng(7);
+  std::normal_distribution<double> g(0.0, 1.0);
+  for (auto& p : mesh.rest) p[2] += 0.1 * kR * g(rng);
+  Vec3List pts;
+  for (int i = 0; i < 8; ++i) {
+    pts.push_back(Vec3(-3.5 * kR + i * kR, 0.4 * kR * g(rng), kR + kH - 0.05 * kR * (1 + g(rng))));
+  }
+  RodState s = wire_over(mesh, pts.front(), pts.back(), 8);
+  s.x = pts;
+  WireShellTerm term(mesh, params());
+  RodForces f;
+  f.reset(s);
+  term.accumulate(s, f);
+  ASSERT_GT(term.contacts(), 3);
+  Vec3 total = Vec3::Zero();
+  double fmax = 0;
+  for (const auto& v : f.f) total += v, fmax = std::max(fmax, v.norm());
+  for (const auto& v : f.shell_f) total += v, fmax = std::max(fmax, v.norm());
+  EXPECT_LT(total.norm(), 1e-12 * fmax);
+  std::printf("  fd:");
+  std::vector<double> errs;
+  for (double hrel : {1e-3, 1e-4, 1e-5, 1e-6}) {
+    const double h = hrel * kR;
+    double err = 0;
+    auto probe = [&](Vec3& coord, const Vec3& force) {
+      for (int k = 0; k < 3; ++k) {
+        const double keep = coord[k];
+        coord[k] = keep + h;
+        const double up = term.energy(s);
+        coord[k] = keep - h;
+        const double dn = term.energy(s);
+        coord[k] = keep;
+        err = std::max(err, std::abs(force[k] + (up - dn) / (2 * h)));
+      }
+    };
+    for (size_t i = 0; i < s.x.size(); ++i) probe(s.x[i], f.f[i]);
+    for (size_t i = 0; i < s.shell_x.size(); ++i) probe(s.shell_x[i], f.shell_f[i]);
+    errs.push_back(err / fmax);
+    std::printf(" h=%.0e:%.2e", hrel, err / fmax);
+  }
+  std::printf("\n");
+  EXPECT_LT(*std::min_element(errs.begin(), errs.end()), 1e-6);
+  EXPECT_LT(errs[1], 0.1 * errs[0] + 1e-9);
+}
+
+}  // namespace
+}  // namespace wirepack
