@@ -6,14 +6,14 @@
 #include "engine/rod/bend.hpp"
 #include "engine/rod/stretch.hpp"
 #include "engine/rod/twist.hpp"
+#include "engine/shell/bending.hpp"
+#include "engine/shell/membrane.hpp"
+#include "engine/shell/mesh_builders.hpp"
+#include "engine/shell/shell_adapter.hpp"
 
 namespace wirepack {
 
 Assembly assemble(const SceneParams& p) {
-  if (p.shell == ShellKind::Elastic) {
-    throw std::invalid_argument(
-        "shell = \"elastic\" is not available yet (Engine III); use \"rigid\"");
-  }
   Assembly a;
   const WireParams& w = p.wire;
   const double r = w.radius;
@@ -62,19 +62,66 @@ Assembly assemble(const SceneParams& p) {
   fp.stiffness_ratio = 2.0 * (1.0 - w.poisson_ratio) / (2.0 - w.poisson_ratio);  // Mindlin
   fp.damping_ratio = zeta;
 
-  // Rigid sphere wall.
-  SphereWallParams wp;
-  wp.R = R;
-  wp.r = r;
-  wp.hole_radius = a.feeder.hole_radius;
-  wp.E_star = effective_modulus(w.youngs_modulus, w.poisson_ratio,
-                                std::numeric_limits<double>::infinity(), 0.0);
-  wp.damping_ratio = zeta;
-  wp.node_mass = a.inertia.node_mass;
-  wp.friction = fp;
-  auto wall = std::make_unique<SphereWallTerm>(wp);
-  a.wall = wall.get();
-  a.terms.push_back(std::move(wall));
+  if (p.shell == ShellKind::Rigid) {
+    // Rigid sphere wall.
+    SphereWallParams wp;
+    wp.R = R;
+    wp.r = r;
+    wp.hole_radius = a.feeder.hole_radius;
+    wp.E_star = effective_modulus(w.youngs_modulus, w.poisson_ratio,
+                                  std::numeric_limits<double>::infinity(), 0.0);
+    wp.damping_ratio = zeta;
+    wp.node_mass = a.inertia.node_mass;
+    wp.friction = fp;
+    auto wall = std::make_unique<SphereWallTerm>(wp);
+    a.wall = wall.get();
+    a.terms.push_back(std::move(wall));
+  } else {
+    // Elastic shell: mid-surface radius R, thickness t = R / xi, E_s = E_w / eps.
+    ShellMaterial& sm = a.shell_material;
+    sm.E = w.youngs_modulus / p.eps;
+    sm.nu = SceneConstants::kShellPoisson;
+    sm.t = R / p.xi;
+    const double h = 0.5 * sm.t;
+    // The hole lets the wire through with the same clearance as the rigid sphere's: the
+    // capsule of the wire clears the rim's slab by 0.1 r.
+    const double hole = (1.0 + SceneConstants::kHoleClearance) * r + h;
+    const double mesh_size = p.numerics.shell_mesh_size;
+    a.mesh = std::make_unique<ShellMesh>(sphere_with_hole(R, mesh_size, hole, mesh_size));
+    const ShellMesh& mesh = *a.mesh;
+    a.feeder.hole_radius = R * std::sin(sphere_hole_radius(mesh_size, hole) / R);
+    // Masses: the shell's physical density scaled by the wire's mass-scaling factor.
+    const double rho_s = SceneConstants::kShellDensity * a.density_scaled / w.density;
+    a.vertex_mass.assign(mesh.num_vertices(), 0.0);
+    for (const auto& f : mesh.faces) {
+      const double area =
+          0.5 * (mesh.rest[f[1]] - mesh.rest[f[0]]).cross(mesh.rest[f[2]] - mesh.rest[f[0]]).norm();
+      for (int v : f) a.vertex_mass[v] += rho_s * sm.t * area / 3.0;
+    }
+    double m_min = std::numeric_limits<double>::infinity();
+    for (int v = 0; v < mesh.num_vertices(); ++v) {
+      if (!mesh.clamped[v]) m_min = std::min(m_min, a.vertex_mass[v]);
+    }
+    // Vertex damping at 2 zeta omega_b, the membrane breathing frequency of the sphere,
+    // omega_b^2 = 2 E_s / (rho_s R^2 (1 - nu_s)): the mode the injected wire drives.
+    a.shell_damping_rate = 2.0 * zeta * std::sqrt(2.0 * sm.E / (rho_s * R * R * (1.0 - sm.nu)));
+    a.terms.push_back(
+        std::make_unique<ShellTermAdapter>(std::make_unique<MembraneTerm>(mesh, sm), m_min));
+    a.terms.push_back(
+        std::make_unique<ShellTermAdapter>(std::make_unique<BendingTerm>(mesh, sm), m_min));
+    WireShellParams ws;
+    ws.r = r;
+    ws.half_thickness = h;
+    ws.E_star = effective_modulus(w.youngs_modulus, w.poisson_ratio, sm.E, sm.nu);
+    ws.skin = SceneConstants::kSkin * r;
+    ws.damping_ratio = zeta;
+    ws.node_mass = a.inertia.node_mass;
+    ws.vertex_mass = m_min;
+    ws.friction = fp;
+    auto contact = std::make_unique<WireShellTerm>(mesh, ws);
+    a.wire_shell = contact.get();
+    a.terms.push_back(std::move(contact));
+  }
 
   // Wire self-contact.
   SelfContactParams sp;

@@ -8,11 +8,13 @@
 
 #include "engine/contact/self_contact.hpp"
 #include "engine/contact/sphere_wall.hpp"
+#include "engine/contact/wire_shell.hpp"
 #include "engine/feeder.hpp"
 #include "engine/integrate/damping.hpp"
 #include "engine/integrate/predictor_corrector.hpp"
 #include "engine/params.hpp"
 #include "engine/rod/material.hpp"
+#include "engine/shell/shell_term.hpp"
 #include "engine/term.hpp"
 
 namespace wirepack {
@@ -24,6 +26,8 @@ struct SceneConstants {
   static constexpr double kReleaseNoise = 1e-3;     // rms offset of each released node / r
   static constexpr double kSkin = 0.5;              // Verlet skin of the self-contact list / r
   static constexpr double kDtFloorFraction = 1e-6;  // step collapse below this x initial stable dt
+  static constexpr double kShellPoisson = 1.0 / 3.0;  // nu_s (paper)
+  static constexpr double kShellDensity = 1000.0;     // physical shell density [kg/m^3] (rubber)
 };
 
 struct Assembly {
@@ -34,8 +38,15 @@ struct Assembly {
   FeederParams feeder;
   StepControl control;
   std::vector<std::unique_ptr<Term>> terms;
-  SphereWallTerm* wall = nullptr;  // owned by `terms`
+  SphereWallTerm* wall = nullptr;  // owned by `terms` (rigid shell)
   SelfContactTerm* self_contact = nullptr;
+
+  // Elastic shell (Engine III); empty for a rigid sphere.
+  std::unique_ptr<ShellMesh> mesh;  // rest mesh, shared read-only by the shell terms
+  ShellMaterial shell_material;
+  std::vector<double> vertex_mass;      // lumped, scaled like the wire (nv) [kg]
+  double shell_damping_rate = 0;        // gamma_s of the vertex damping [1/s]
+  WireShellTerm* wire_shell = nullptr;  // owned by `terms`
 };
 
 // Throws std::invalid_argument for scenes this engine cannot simulate.

@@ -5,6 +5,7 @@
 
 #include "engine/rod/frames.hpp"
 #include "engine/scene.hpp"
+#include "engine/shell/winding.hpp"
 
 namespace wirepack {
 
@@ -19,6 +20,7 @@ struct Simulation::Impl {
   std::vector<double> term_energy;  // per term, at the last evaluation [J]
   double time = 0.0;
   long steps = 0;
+  std::unique_ptr<ShellWinding> winding;  // inside test (elastic shell only)
 
   explicit Impl(const SceneParams& p)
       : params(p),
@@ -28,6 +30,11 @@ struct Simulation::Impl {
         integrator(assembly.control, p.wire.radius),
         state(feeder.initial_state()),
         term_energy(assembly.terms.size(), 0.0) {
+    if (assembly.mesh) {
+      winding = std::make_unique<ShellWinding>(*assembly.mesh);
+      state.shell_x = assembly.mesh->rest;
+      state.shell_v.assign(state.shell_x.size(), Vec3::Zero());
+    }
     integrator.initialise(state, eval_fn(), moved_fn());
     // A step far below the initial stability limit means the run has collapsed.
     StepControl c = assembly.control;
@@ -52,6 +59,15 @@ struct Simulation::Impl {
     const double inv_m = 1.0 / assembly.inertia.node_mass;
     for (int i = 0; i < n; ++i) a[i] = i < s.n_free ? Vec3(inv_m * forces.f[i]) : Vec3::Zero();
     shell_a.assign(s.shell_x.size(), Vec3::Zero());
+    if (assembly.mesh) {
+      // Shell vertices: forces of the terms minus the vertex damping; clamped ones held.
+      const auto& clamped = assembly.mesh->clamped;
+      const double gamma = assembly.shell_damping_rate;
+      for (size_t k = 0; k < s.shell_x.size(); ++k) {
+        if (clamped[k]) continue;
+        shell_a[k] = forces.shell_f[k] / assembly.vertex_mass[k] - gamma * s.shell_v[k];
+      }
+    }
     alpha.assign(s.theta.size(), 0.0);
     if (s.has_twist()) {
       const double inv_i = 1.0 / assembly.inertia.edge_twist_inertia;
@@ -85,8 +101,24 @@ struct Simulation::Impl {
         throw SimulationError("non-finite state (NaN/Inf) at node " + std::to_string(i));
       }
       // A node centre a whole radius beyond the wall has passed through it.
-      if (x.norm() > R + r && x[2] > feeder.z_hole()) {
+      if (assembly.wall && x.norm() > R + r && x[2] > feeder.z_hole()) {
         throw SimulationError("wire node " + std::to_string(i) + " tunnelled through the wall");
+      }
+    }
+  }
+
+  void check_shell() const {
+    if (!assembly.wire_shell) return;
+    for (const Vec3& x : state.shell_x) {
+      if (!x.allFinite()) throw SimulationError("non-finite shell state (NaN/Inf)");
+    }
+    // Every 100 steps (O(nodes x faces)): each released node must be inside the shell.
+    if (steps % 100 != 0) return;
+    const double z_min = feeder.z_hole() + 2.0 * params.wire.radius;
+    for (int i = 0; i < state.n_free; ++i) {
+      if (state.x[i][2] < z_min) continue;  // in the entrance hole
+      if ((*winding)(state.x[i], state.shell_x) < 0.5) {
+        throw SimulationError("wire node " + std::to_string(i) + " passed through the shell");
       }
     }
   }
@@ -97,6 +129,7 @@ struct Simulation::Impl {
     time += dt;
     ++steps;
     check_state();
+    check_shell();
     if (feeder.release(state) > 0) {
       integrator.initialise(state, eval_fn(), moved_fn());
       commit();
@@ -157,7 +190,10 @@ Energies Simulation::energies() const {
   e.U_b = impl_->energy_of("bend");
   e.U_t = impl_->energy_of("twist");
   e.U_s = impl_->energy_of("stretch");
-  e.U_contact = impl_->energy_of("wall") + impl_->energy_of("self_contact");
+  e.U_m = impl_->energy_of("membrane");
+  e.U_sb = impl_->energy_of("shell_bending");
+  e.U_contact =
+      impl_->energy_of("wall") + impl_->energy_of("self_contact") + impl_->energy_of("wire_shell");
   const RodState& s = impl_->state;
   double k = 0.0;
   for (int i = 0; i < s.n_free; ++i) k += s.v[i].squaredNorm();
@@ -167,6 +203,8 @@ Energies Simulation::energies() const {
     if (s.edge_free(static_cast<int>(j))) kt += s.omega[j] * s.omega[j];
   }
   e.E_kin += 0.5 * impl_->assembly.inertia.edge_twist_inertia * kt;
+  const auto& vm = impl_->assembly.vertex_mass;
+  for (size_t k = 0; k < s.shell_v.size(); ++k) e.E_kin += 0.5 * vm[k] * s.shell_v[k].squaredNorm();
   return e;
 }
 
@@ -186,10 +224,11 @@ std::vector<std::string> Simulation::term_names() const {
 }
 
 std::span<const Vec3> Simulation::shell_vertices() const {
-  return {};
+  return impl_->state.shell_x;
 }
 std::span<const std::array<int, 3>> Simulation::shell_triangles() const {
-  return {};
+  if (!impl_->assembly.mesh) return {};
+  return impl_->assembly.mesh->faces;
 }
 
 }  // namespace wirepack

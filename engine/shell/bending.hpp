@@ -22,7 +22,7 @@
 // Boundary edges (one adjacent face): if both end vertices are clamped, the edge normal is
 // held at the rest normal of its face (a clamped edge: zero slope, the rotation is held);
 // otherwise it is the face's own current normal, so s_i = 0 (a free edge carries no moment).
-#include <memory>
+#include <array>
 #include <vector>
 
 #include <Eigen/Core>
@@ -33,7 +33,8 @@ namespace wirepack {
 
 class BendingTerm : public ShellTerm {
  public:
-  BendingTerm(std::shared_ptr<const ShellMesh> mesh, const ShellMaterial& material);
+  // Copies what it needs of the mesh (topology, rest shape, clamped flags).
+  BendingTerm(const ShellMesh& mesh, const ShellMaterial& material);
   std::string name() const override { return "shell_bending"; }
   double accumulate(const Vec3List& x, Vec3List& f) override;
   double energy(const Vec3List& x) override;
@@ -48,7 +49,7 @@ class BendingTerm : public ShellTerm {
 
   // Dimensionless constant of omega_max_sq (calibrated against the largest eigenvalue of the
   // finite-difference stiffness, tests/engine/shell/test_bending.cpp).
-  static constexpr double kOmegaConstant = 24.0;
+  static constexpr double kOmegaConstant = 40.0;
 
  private:
   // Edge normal rule: interior (average of the two face normals), free boundary (own face
@@ -62,21 +63,23 @@ class BendingTerm : public ShellTerm {
   // Energy of face f and dU/ds_i (3) from its folds s (3).
   double face_energy(int f, const Eigen::Vector3d& s, Eigen::Vector3d* dU_ds) const;
 
-  std::shared_ptr<const ShellMesh> mesh_;
-  double B_;   // bending rigidity M t^2 / 12 [N m]
-  double nu_;  // Poisson ratio [-]
-  std::vector<EdgeKind> edge_kind_;      // (ne)
-  std::vector<Vec3> edge_fixed_normal_;  // rest face normal on clamped boundary edges (ne)
-  std::vector<double> rest_area_;        // Abar (nf) [m^2]
-  std::vector<Eigen::Matrix2d> abar_inv_;  // inverse rest metric, contravariant (nf) [1/m^2]
-  std::vector<Eigen::Matrix2d> bbar_;      // rest second fundamental form (nf) [m]
-  double h_min_ = 0.0;                     // smallest rest altitude of any face [m]
+  std::vector<std::array<int, 3>> faces_;       // vertex indices (nf)
+  std::vector<std::array<int, 3>> face_edges_;  // edge i opposite to vertex i (nf)
+  std::vector<std::array<int, 2>> edge_faces_;  // adjacent faces, -1 on a boundary (ne)
+  double B_;                                    // bending rigidity M t^2 / 12 [N m]
+  double nu_;                                   // Poisson ratio [-]
+  std::vector<EdgeKind> edge_kind_;             // (ne)
+  std::vector<Vec3> edge_fixed_normal_;         // rest face normal on clamped boundary edges (ne)
+  std::vector<double> rest_area_;               // Abar (nf) [m^2]
+  std::vector<Eigen::Matrix2d> abar_inv_;       // inverse rest metric, contravariant (nf) [1/m^2]
+  std::vector<Eigen::Matrix2d> bbar_;           // rest second fundamental form (nf) [m]
+  double h_min_ = 0.0;                          // smallest rest altitude of any face [m]
 
   // Work arrays (per-run state, reused across calls).
-  std::vector<Vec3> face_normal_;  // unit normal N_f (nf)
-  std::vector<double> face_dblarea_;  // |(q1 - q0) x (q2 - q0)| (nf) [m^2]
-  std::vector<Vec3> edge_normal_;  // unit n_e (ne)
-  std::vector<double> edge_mnorm_;  // |N_f0 + N_f1| on interior edges (ne)
+  std::vector<Vec3> face_normal_;       // unit normal N_f (nf)
+  std::vector<double> face_dblarea_;    // |(q1 - q0) x (q2 - q0)| (nf) [m^2]
+  std::vector<Vec3> edge_normal_;       // unit n_e (ne)
+  std::vector<double> edge_mnorm_;      // |N_f0 + N_f1| on interior edges (ne)
   std::vector<Vec3> grad_edge_normal_;  // dU/dn_e (ne) [J]
   std::vector<Vec3> grad_face_normal_;  // dU/dN_f (nf) [J]
 };

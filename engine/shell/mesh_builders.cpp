@@ -10,6 +10,16 @@ namespace wirepack {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+// Rest length of the relaxation springs over the mean edge: slightly above 1 the net is under
+// a little pressure, which evens out the areas. Max/min face area at n = 12 / 48: 1.25 / 1.34
+// (1.34 / 1.49 at 1.0; 1.80 / ~2 unrelaxed). At 1.15 the net folds for n = 48, so
+// geodesic_sphere checks the angles and falls back to 1.0 should that ever happen.
+constexpr double kSpringLength = 1.1;
+// Sweeps of the global relaxation: the edge spread settles within a few hundred; full
+// convergence would take ~20 n^2 sweeps (18 s at n = 48; 2 s with this cap).
+constexpr int kRelaxSweeps = 2000;
+// The hole's boundary circle is not drawn tighter than this many target edges.
+constexpr double kMinHoleRadius = 0.6;
 
 // Icosahedron of unit circumradius with vertices at the poles: 0 = north, 1..5 upper ring at
 // z = 1/sqrt(5) and longitudes 72 k deg, 6..10 lower ring at longitudes 36 + 72 k deg,
@@ -63,20 +73,20 @@ double mean_edge(const ShellMesh& m) {
   return s / static_cast<double>(m.edges.size());
 }
 
-// Spring relaxation on the sphere of radius R: every edge is a spring of rest length L0 (the
-// current mean edge), each vertex moves by 1/2 of the mean spring force per neighbour and is
-// projected back onto the sphere (Jacobi sweeps). Vertices with circle[i] = 1 slide on the
-// circle of geodesic angle theta_c around the south pole instead. Stops after max_iter sweeps
-// or when no vertex moves by more than tol * L0.
-void relax_on_sphere(ShellMesh& m, double R, const std::vector<char>& circle, double theta_c,
-                     int max_iter, double tol) {
+// Spring relaxation on the sphere of radius R: every edge is a spring of rest length L0 [m],
+// each vertex moves by 1/2 of the mean spring force per neighbour and is projected back onto
+// the sphere (Jacobi sweeps). mode[i]: 0 free on the sphere, 1 sliding on the circle of
+// geodesic angle theta_c around the south pole, 2 fixed. Stops after max_iter sweeps or when
+// no vertex moves by more than tol * L0.
+void relax_on_sphere(ShellMesh& m, double R, double L0, const std::vector<char>& mode,
+                     double theta_c, int max_iter, double tol) {
   const auto nb = neighbours(m);
   const int nv = m.num_vertices();
-  Vec3List next(nv);
+  Vec3List next = m.rest;
   for (int it = 0; it < max_iter; ++it) {
-    const double L0 = mean_edge(m);
     double moved = 0.0;
     for (int i = 0; i < nv; ++i) {
+      if (mode[i] == 2) continue;
       Vec3 d = Vec3::Zero();
       for (int j : nb[i]) {
         const Vec3 e = m.rest[j] - m.rest[i];
@@ -84,11 +94,12 @@ void relax_on_sphere(ShellMesh& m, double R, const std::vector<char>& circle, do
         d += (len - L0) / len * e;
       }
       Vec3 y = m.rest[i] + 0.5 / static_cast<double>(nb[i].size()) * d;
-      y = circle[i] ? on_circle(y, R, theta_c) : Vec3(R * y.normalized());
+      y = mode[i] == 1 ? on_circle(y, R, theta_c) : Vec3(R * y.normalized());
       moved = std::max(moved, (y - m.rest[i]).norm());
       next[i] = y;
     }
     m.rest.swap(next);
+    next = m.rest;
     if (moved < tol * L0) break;
   }
 }
@@ -139,14 +150,13 @@ ShellMesh geodesic_sphere(double R, double target_edge) {
   auto vertex = [&](const std::array<int, 3>& abc, int i, int j) {
     // Barycentric weights (n - i - j, i, j) on (A, B, C); key: sorted (vertex, weight) pairs
     // with zero weights dropped.
-    std::array<std::pair<int, int>, 3> w{
-        {{abc[0], n - i - j}, {abc[1], i}, {abc[2], j}}};
+    std::array<std::pair<int, int>, 3> w{{{abc[0], n - i - j}, {abc[1], i}, {abc[2], j}}};
     for (auto& p : w) {
       if (p.second == 0) p.first = -1;
     }
     std::sort(w.begin(), w.end());
-    const auto key = std::make_tuple(w[0].first, w[0].second, w[1].first, w[1].second,
-                                     w[2].first, w[2].second);
+    const auto key =
+        std::make_tuple(w[0].first, w[0].second, w[1].first, w[1].second, w[2].first, w[2].second);
     auto it = index.find(key);
     if (it != index.end()) return it->second;
     const Vec3 p = (n - i - j) * iv[abc[0]] + i * iv[abc[1]] + j * iv[abc[2]];
@@ -158,8 +168,7 @@ ShellMesh geodesic_sphere(double R, double target_edge) {
   for (const auto& abc : ifaces) {
     for (int j = 0; j < n; ++j) {
       for (int i = 0; i + j < n; ++i) {
-        const int p00 = vertex(abc, i, j), p10 = vertex(abc, i + 1, j),
-                  p01 = vertex(abc, i, j + 1);
+        const int p00 = vertex(abc, i, j), p10 = vertex(abc, i + 1, j), p01 = vertex(abc, i, j + 1);
         m.faces.push_back({p00, p10, p01});
         if (i + j + 1 < n) m.faces.push_back({p10, vertex(abc, i + 1, j + 1), p01});
       }
@@ -167,19 +176,24 @@ ShellMesh geodesic_sphere(double R, double target_edge) {
   }
   m.clamped.assign(m.rest.size(), 0);
   m.build_topology();
-  relax_on_sphere(m, R, std::vector<char>(m.rest.size(), 0), 0.0, 20 * n * n + 100, 1e-9);
+  const ShellMesh projected = m;
+  const std::vector<char> free(m.rest.size(), 0);
+  relax_on_sphere(m, R, kSpringLength * mean_edge(m), free, 0.0, kRelaxSweeps, 1e-6);
+  // The projected mesh has angles >= 54 deg; a relaxed one far below that has folded.
+  if (mesh_quality(m).min_angle_deg < 45.0) {
+    m = projected;
+    relax_on_sphere(m, R, mean_edge(m), free, 0.0, kRelaxSweeps, 1e-6);
+  }
   return m;
 }
 
-ShellMesh sphere_with_hole(double R, double target_edge, double hole_radius,
-                           double clamp_width) {
-  ShellMesh m = geodesic_sphere(R, target_edge);
-  if (!(hole_radius > 0)) return m;
-  const double theta_c = (hole_radius + clamp_width) / R;
-  // The boundary circle is not drawn tighter than half an edge (pentagon of ~0.6 edges).
-  const double theta_h = std::max(hole_radius, 0.5 * mean_edge(m)) / R;
-  if (!(theta_h < kPi / 2)) throw std::invalid_argument("sphere_with_hole: hole too large");
-  // Faces whose centroid is in the cap, and always those at the pole vertex.
+namespace {
+
+// Cuts the hole of sphere_with_hole with removal radius rho [m] (faces whose centroid is
+// within geodesic distance rho of the south pole, and the five at the pole), moves the
+// boundary onto the circle of geodesic angle theta_h and relaxes the vertices within
+// theta_h + 3 edges with springs of length L0. Returns false where the cut is not a disc.
+bool cut_hole(ShellMesh& m, double R, double rho, double theta_h, double L0) {
   std::vector<char> keep(m.num_faces(), 1);
   for (int f = 0; f < m.num_faces(); ++f) {
     Vec3 c = Vec3::Zero();
@@ -188,7 +202,7 @@ ShellMesh sphere_with_hole(double R, double target_edge, double hole_radius,
       c += m.rest[v];
       at_pole = std::max(at_pole, -m.rest[v].z() / R);
     }
-    if (polar_from_south(c) < theta_h || at_pole > 1 - 1e-12) keep[f] = 0;
+    if (polar_from_south(c) * R < rho || at_pole > 1 - 1e-12) keep[f] = 0;
   }
   keep_faces(m, keep);
   // Ears (faces with two edges on the hole) would fold over when their tip is moved onto the
@@ -203,37 +217,77 @@ ShellMesh sphere_with_hole(double R, double target_edge, double hole_radius,
     }
     if (again) keep_faces(m, keep);
   }
-  // The hole's boundary must be one simple loop (a disc was cut out).
-  std::vector<int> boundary_degree(m.num_vertices(), 0);
-  int boundary_edges = 0;
+  // A disc was cut out: Euler characteristic 1 and every boundary vertex on two boundary edges
+  // (one simple loop).
+  std::vector<int> degree(m.num_vertices(), 0);
   for (size_t e = 0; e < m.edges.size(); ++e) {
     if (m.edge_faces[e][1] >= 0) continue;
-    ++boundary_edges;
-    ++boundary_degree[m.edges[e][0]];
-    ++boundary_degree[m.edges[e][1]];
+    ++degree[m.edges[e][0]];
+    ++degree[m.edges[e][1]];
   }
-  std::vector<char> on_hole(m.num_vertices(), 0);
-  int boundary_vertices = 0;
+  if (m.num_vertices() - static_cast<int>(m.edges.size()) + m.num_faces() != 1) return false;
+  std::vector<char> mode(m.num_vertices(), 2);
   for (int v = 0; v < m.num_vertices(); ++v) {
-    if (boundary_degree[v] == 0) continue;
-    if (boundary_degree[v] != 2) throw std::runtime_error("sphere_with_hole: pinched hole");
-    on_hole[v] = 1;
-    ++boundary_vertices;
+    if (degree[v] != 0 && degree[v] != 2) return false;
+    if (degree[v] == 2) {
+      mode[v] = 1;
+      m.rest[v] = on_circle(m.rest[v], R, theta_h);
+    } else if (polar_from_south(m.rest[v]) < theta_h + 3 * L0 / R) {
+      mode[v] = 0;
+    }
   }
-  if (boundary_vertices != boundary_edges) {
-    throw std::runtime_error("sphere_with_hole: hole boundary is not one loop");
+  relax_on_sphere(m, R, L0, mode, theta_h, 2000, 1e-9);
+  return true;
+}
+
+// Smallest interior angle of the faces with a vertex within geodesic angle theta of the south
+// pole [rad].
+double min_angle_near_pole(const ShellMesh& m, double theta) {
+  double worst = kPi;
+  for (const auto& f : m.faces) {
+    bool near = false;
+    for (int v : f) near = near || polar_from_south(m.rest[v]) < theta;
+    if (!near) continue;
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 a = m.rest[f[(k + 1) % 3]] - m.rest[f[k]];
+      const Vec3 b = m.rest[f[(k + 2) % 3]] - m.rest[f[k]];
+      worst = std::min(worst, std::atan2(a.cross(b).norm(), a.dot(b)));
+    }
   }
-  // Boundary onto the circle of geodesic radius hole_radius, then relax again.
-  for (int v = 0; v < m.num_vertices(); ++v) {
-    if (on_hole[v]) m.rest[v] = on_circle(m.rest[v], R, theta_h);
+  return worst;
+}
+
+}  // namespace
+
+double sphere_hole_radius(double target_edge, double hole_radius) {
+  return hole_radius > 0 ? std::max(hole_radius, kMinHoleRadius * target_edge) : 0.0;
+}
+
+ShellMesh sphere_with_hole(double R, double target_edge, double hole_radius, double clamp_width) {
+  ShellMesh sphere = geodesic_sphere(R, target_edge);
+  if (!(hole_radius > 0)) return sphere;
+  const double edge = mean_edge(sphere);
+  const double theta_h = sphere_hole_radius(target_edge, hole_radius) / R;
+  if (!(theta_h < kPi / 2)) throw std::invalid_argument("sphere_with_hole: hole too large");
+  // The faces removed decide how many vertices the boundary circle gets (ideally its length
+  // over one edge): try removal radii around the hole radius and keep the cut whose faces near
+  // the hole have the largest smallest angle (ties: the removal radius closest to the hole's).
+  ShellMesh best;
+  double best_angle = -1.0;
+  for (int k : {0, -1, 1, -2, 2, -3, 3, -4, 4, -5, 5}) {
+    const double rho = theta_h * R + 0.1 * k * edge;
+    if (rho < 0) continue;
+    ShellMesh m = sphere;
+    if (!cut_hole(m, R, rho, theta_h, kSpringLength * edge)) continue;
+    const double angle = min_angle_near_pole(m, theta_h + 4 * edge / R);
+    if (angle > best_angle + 1e-3) best = std::move(m), best_angle = angle;
   }
-  const int n = sphere_frequency(R, target_edge);
-  relax_on_sphere(m, R, on_hole, theta_h, 20 * n * n + 100, 1e-9);
-  const double tol = 1e-9;
-  for (int v = 0; v < m.num_vertices(); ++v) {
-    m.clamped[v] = polar_from_south(m.rest[v]) <= theta_c + tol ? 1 : 0;
+  if (best_angle < 0) throw std::runtime_error("sphere_with_hole: no clean cut found");
+  const double theta_c = (hole_radius + clamp_width) / R, tol = 1e-9;
+  for (int v = 0; v < best.num_vertices(); ++v) {
+    best.clamped[v] = polar_from_south(best.rest[v]) <= std::max(theta_c, theta_h) + tol ? 1 : 0;
   }
-  return m;
+  return best;
 }
 
 ShellMesh flat_square(double L, int n) {

@@ -13,8 +13,8 @@ namespace wirepack {
 // with more than two faces or with two faces of the same direction (inconsistent orientation).
 void ShellMesh::build_topology() {
   struct HalfEdge {
-    int a, b;  // sorted vertex pair
-    int face, k;  // face and the local index of the opposite vertex
+    int a, b;      // sorted vertex pair
+    int face, k;   // face and the local index of the opposite vertex
     bool forward;  // the face traverses a -> b
   };
   std::vector<HalfEdge> he;
