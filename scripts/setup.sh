@@ -5,7 +5,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(build-essential cmake git pkg-config libeigen3-dev libhdf5-dev nlohmann-json3-dev
-          libomp-dev libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev gnuplot-nox
+          libomp-dev libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev gnuplot-nox hdf5-tools
           clang-format)
 missing=()
 for p in "${packages[@]}"; do
