@@ -9,13 +9,18 @@ namespace wirepack {
 
 namespace {
 
-// Vertex k of face f and the cyclic successors used by s_i.
-inline int next(int i) {
+// Cyclic successor and predecessor of a local vertex index: s_i uses q_{i+1}, q_{i+2}.
+int next(int i) {
   return i == 2 ? 0 : i + 1;
 }
-inline int prev(int i) {
+int prev(int i) {
   return i == 0 ? 2 : i - 1;
 }
+
+// |N_f0 + N_f1| = 2 cos(theta / 2) for a fold theta is kept away from 0 (two faces folded flat
+// onto each other, where the edge normal is undefined and its derivative ~ 1 / |m| diverges),
+// so forces stay finite; such a state is far outside anything a step accepts.
+constexpr double kMinNormalSum = 1e-8;
 
 }  // namespace
 
@@ -222,11 +227,13 @@ std::vector<double> BendingTerm::face_energies(const Vec3List& x) {
   return U;
 }
 
-Eigen::Matrix2d BendingTerm::second_fundamental_form(const Vec3List& x, int f) {
+std::vector<Eigen::Matrix2d> BendingTerm::second_fundamental_forms(const Vec3List& x) {
   compute_normals(x);
-  const Eigen::Vector3d s = edge_folds(x, f);
-  Eigen::Matrix2d b;
-  b << s[0] + s[1], s[0], s[0], s[0] + s[2];
+  std::vector<Eigen::Matrix2d> b(faces_.size());
+  for (int f = 0; f < static_cast<int>(faces_.size()); ++f) {
+    const Eigen::Vector3d s = edge_folds(x, f);
+    b[f] << s[0] + s[1], s[0], s[0], s[0] + s[2];
+  }
   return b;
 }
 
