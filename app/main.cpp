@@ -10,9 +10,13 @@
 
 #include "sweep/errors.hpp"
 #include "sweep/export.hpp"
+#include "sweep/format.hpp"
+#include "sweep/json_file.hpp"
 #include "sweep/run.hpp"
 #include "sweep/run_file.hpp"
 #include "sweep/scene_config.hpp"
+#include "sweep/sweep_config.hpp"
+#include "sweep/sweep_runner.hpp"
 
 namespace {
 
@@ -53,10 +57,66 @@ int cmd_run(const std::string& scene_path, const std::string& out) {
   return kOk;
 }
 
+// A scene prints resolved (every default filled); a sweep (an object with "grid") prints
+// resolved with its expanded runs: {"sweep": ..., "runs": [{index, id, file, point, seed}]}.
 int cmd_validate(const std::string& path) {
-  const Scene scene = load_scene(path);
-  std::cout << scene.resolved.dump(2) << '\n';
+  std::vector<std::string> duplicates;  // reported by load_scene / load_sweep below
+  if (!is_sweep_json(load_json_file(path, &duplicates))) {
+    const Scene scene = load_scene(path);
+    std::cout << scene.resolved.dump(2) << '\n';
+    return kOk;
+  }
+  const Sweep sweep = load_sweep(path);
+  nlohmann::json runs = nlohmann::json::array();
+  for (const auto& r : sweep.runs)
+    runs.push_back({{"index", r.index},
+                    {"id", r.id},
+                    {"file", r.file},
+                    {"point", r.point_values},
+                    {"seed", r.seed}});
+  std::cout << nlohmann::json{{"sweep", sweep.resolved}, {"runs", runs}}.dump(2) << '\n';
   return kOk;
+}
+
+struct SweepArgs {
+  std::string path;   // sweep file; "" = the embedded default sweep
+  std::string out;    // sweep directory; "" = sweeps/<name>
+  int threads = 0;    // 0 = all cores
+  std::string shard;  // "K/N"; "" = from SLURM_ARRAY_TASK_* or 0/1
+  bool retry_failed = false;
+};
+
+// DESIGN §6: exit 0 when every run of the shard is complete, 1 when any failed (a summary on
+// stderr), 2 on bad input before anything is written. The manifest's path goes to stdout.
+int cmd_sweep(const SweepArgs& a) {
+  const Sweep sweep = a.path.empty() ? parse_sweep(default_sweep_json(), "<embedded default sweep>")
+                                     : load_sweep(a.path);
+  const Shard shard =
+      a.shard.empty() ? shard_from_env().value_or(Shard{}) : parse_shard(a.shard, "--shard");
+  SweepOptions opt;
+  opt.dir = a.out.empty() ? "sweeps/" + sweep.name : a.out;
+  opt.threads = a.threads;
+  opt.shard = shard;
+  opt.retry_failed = a.retry_failed;
+  opt.progress = &std::cerr;
+  const SweepOutcome o = run_sweep(sweep, opt);
+
+  std::cerr << "sweep " << sweep.name << ": " << o.runs << " runs"
+            << (shard.count > 1 ? " in shard " + shard.text() : std::string()) << ", " << o.complete
+            << " complete, " << o.failed << " failed (" << o.ran << " run now on " << o.threads
+            << " thread" << (o.threads == 1 ? "" : "s") << " in " << format_duration(o.wall_s)
+            << ", " << o.found << " found finished)\n";
+  constexpr std::size_t kListed = 20;
+  for (std::size_t i = 0; i < o.failures.size() && i < kListed; ++i)
+    std::cerr << "  failed: " << (fs::path(opt.dir) / o.failures[i].first).string() << ": "
+              << o.failures[i].second << '\n';
+  if (o.failures.size() > kListed)
+    std::cerr << "  ... and " << o.failures.size() - kListed << " more (see " << o.manifest
+              << ")\n";
+  if (o.failed > 0 && !a.retry_failed)
+    std::cerr << "  (rerun with --retry-failed to run the failed ones again)\n";
+  std::cout << o.manifest << '\n';
+  return o.failed > 0 ? kRunFailed : kOk;
 }
 
 int cmd_export(const std::string& run_file, const std::string& csv, const std::string& xmf) {
@@ -88,10 +148,30 @@ int main(int argc, char** argv) {
                   "rho = 20, mu_s = 0, l_max = 20; see scenes/rigid_default.json)");
   run->add_option("-o,--out", out_path, "run file to write (HDF5)")->required();
 
+  SweepArgs sweep_args;
+  auto* sweep = app.add_subcommand(
+      "sweep",
+      "run every (grid point, seed) of a sweep file as parallel runs into one directory; "
+      "rerunning resumes (finished runs are kept)");
+  sweep->add_option("sweep", sweep_args.path,
+                    "sweep file (JSON); without one, the embedded default sweep (rigid sphere, "
+                    "rho = 20, mu_s = 0, 0.5, 1, 2 seeds, l_max = 20; see "
+                    "scenes/default.sweep.json)");
+  sweep->add_option("-o,--out", sweep_args.out,
+                    "sweep directory (default sweeps/NAME, NAME from the sweep file)");
+  sweep->add_option("-j,--threads", sweep_args.threads, "concurrent runs (default: all cores)")
+      ->check(CLI::Range(1, 4096));
+  sweep->add_option("--shard", sweep_args.shard,
+                    "K/N: run only every N-th run of the run order, starting at K (default: "
+                    "from SLURM_ARRAY_TASK_ID and SLURM_ARRAY_TASK_COUNT, else 0/1)");
+  sweep->add_flag("--retry-failed", sweep_args.retry_failed,
+                  "run again the runs whose file says failed (kept otherwise)");
+
   std::string validate_path;
-  auto* validate =
-      app.add_subcommand("validate", "check a scene file and print it resolved (all defaults)");
-  validate->add_option("file", validate_path, "scene file (JSON)")->required();
+  auto* validate = app.add_subcommand(
+      "validate",
+      "check a scene or sweep file and print it resolved (all defaults; a sweep with its runs)");
+  validate->add_option("file", validate_path, "scene or sweep file (JSON)")->required();
 
   std::string run_file, csv_path, xmf_path;
   auto* exp = app.add_subcommand("export",
@@ -114,6 +194,7 @@ int main(int argc, char** argv) {
 
   try {
     if (*run) return cmd_run(scene_path, out_path);
+    if (*sweep) return cmd_sweep(sweep_args);
     if (*validate) return cmd_validate(validate_path);
     if (*exp) return cmd_export(run_file, csv_path, xmf_path);
     if (*schema) {

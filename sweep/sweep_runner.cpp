@@ -1,0 +1,313 @@
+#include "sweep/sweep_runner.hpp"
+
+#include <omp.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <filesystem>
+#include <memory>
+#include <mutex>
+#include <thread>
+
+#include "sweep/errors.hpp"
+#include "sweep/format.hpp"
+#include "sweep/run.hpp"
+#include "sweep/run_file.hpp"
+
+namespace wirepack::sweep {
+
+namespace fs = std::filesystem;
+using clock_type = std::chrono::steady_clock;
+
+void prepare_sweep_dir(const std::string& dir) {
+  std::error_code ec;
+  const fs::path runs = fs::path(dir) / "runs";
+  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+    throw InputError(dir + ": --out must name a directory (it is a file)");
+  // Shards may create it at the same moment: only its absence afterwards is an error.
+  fs::create_directories(runs, ec);
+  std::error_code ec2;
+  if (!fs::is_directory(runs, ec2))
+    throw InputError(dir + ": cannot create " + runs.string() + " (" + ec.message() + ")");
+  if (::access(dir.c_str(), W_OK) != 0 || ::access(runs.c_str(), W_OK) != 0)
+    throw InputError(dir + ": directory is not writable");
+}
+
+namespace {
+
+double seconds_since(clock_type::time_point t) {
+  return std::chrono::duration<double>(clock_type::now() - t).count();
+}
+
+// Shared state of one sweep invocation; every member below `mutex` is guarded by it.
+class SweepState {
+ public:
+  SweepState(const Sweep& sweep, const SweepOptions& opt) : sweep_(sweep), opt_(opt) {}
+
+  std::mutex mutex;
+  std::vector<ManifestEntry> entries;  // this shard's runs, in run order
+  std::unique_ptr<JobLog> joblog;
+  std::size_t to_run = 0, started = 0, finished = 0;  // counts of this invocation
+  double finished_wall = 0;                           // sum of wall_s of finished runs [s]
+  int threads = 1;
+  bool manifest_dirty = false;
+  bool changed = false;  // since the last progress line
+  clock_type::time_point t0 = clock_type::now();
+  clock_type::time_point last_manifest{}, last_progress = clock_type::now();
+  std::vector<std::string> warnings;
+
+  std::string path(const ManifestEntry& e) const { return (fs::path(opt_.dir) / e.run->file); }
+
+  // Records a problem that does not stop the sweep (caller holds the mutex).
+  void warn(const std::string& w) {
+    warnings.push_back(w);
+    if (opt_.progress) *opt_.progress << "warning: " << w << std::endl;
+  }
+
+  // Rewrites the manifest (caller holds the mutex).
+  void write_manifest() {
+    try {
+      write_file_atomic(manifest_path(opt_.dir, opt_.shard),
+                        manifest_json(sweep_, opt_.shard, entries).dump(1) + "\n");
+      manifest_dirty = false;
+    } catch (const std::exception& e) {
+      warn(e.what());
+    }
+    last_manifest = clock_type::now();
+  }
+
+  // Periodic work (caller holds the mutex): a pending manifest write, a progress line.
+  void tick() {
+    if (manifest_dirty && seconds_since(last_manifest) >= 1.0) write_manifest();
+    if (!opt_.progress) return;
+    const double since = seconds_since(last_progress);
+    if (since < opt_.progress_interval_s || (!changed && since < 60)) return;
+    *opt_.progress << progress_line() << std::endl;
+    last_progress = clock_type::now();
+    changed = false;
+  }
+
+  // `sweep NAME: 12/40 done, 1 failed, 2 running, elapsed 0:10:00, ETA 0:20:00`. ETA: the mean
+  // wall time of the runs finished in this invocation times the runs left, over the threads.
+  std::string progress_line() const {
+    std::size_t done = 0, failed = 0;
+    for (const auto& e : entries) {
+      done += e.status == EntryStatus::Complete || e.status == EntryStatus::Failed;
+      failed += e.status == EntryStatus::Failed;
+    }
+    const std::size_t running = started - finished;
+    double eta = -1;
+    if (finished > 0)
+      eta = finished_wall / static_cast<double>(finished) * static_cast<double>(to_run - finished) /
+            threads;
+    return "sweep " + sweep_.name + ": " + std::to_string(done) + "/" +
+           std::to_string(entries.size()) + " done, " + std::to_string(failed) + " failed, " +
+           std::to_string(running) + " running, elapsed " + format_duration(seconds_since(t0)) +
+           ", ETA " + format_duration(eta);
+  }
+
+ private:
+  const Sweep& sweep_;
+  const SweepOptions& opt_;
+};
+
+// Looks at what a previous invocation left for `e`: .part leftovers are removed; a final file
+// decides whether the run is finished. Returns true when the run has to be (re)done.
+bool inspect(SweepState& st, ManifestEntry& e, bool retry_failed, SweepOutcome& out) {
+  const std::string path = st.path(e);
+  std::error_code ec;
+  if (fs::exists(path + ".part", ec)) {
+    // A killed run's partial file; the run starts over.
+    if (fs::remove(path + ".part", ec)) ++out.parts_removed;
+  }
+  if (!fs::exists(path, ec)) return true;
+  RunRecord rec;
+  try {
+    rec = read_run_file(path);
+  } catch (const std::exception& ex) {
+    st.warn(path + ": unreadable (" + ex.what() + "); running it again");
+    return true;
+  }
+  if (canonical_json(rec.config) != canonical_json(e.run->scene.resolved)) {
+    st.warn(path + ": holds another configuration; running it again");
+    return true;
+  }
+  if (rec.status == RunStatus::Running) return true;
+  e.status = rec.status == RunStatus::Complete ? EntryStatus::Complete : EntryStatus::Failed;
+  e.reason = rec.failure;
+  e.started = rec.started;
+  e.finished = rec.finished;
+  if (const Series* w = rec.find_series("wall_s"); w && !w->values.empty())
+    e.wall_s = w->values.back();
+  if (e.status == EntryStatus::Failed && retry_failed) {
+    e = ManifestEntry{e.run};
+    return true;
+  }
+  ++out.found;
+  return false;
+}
+
+// One task: simulates a run and records it. Catches everything (an exception must not leave an
+// OpenMP task).
+void execute(SweepState& st, ManifestEntry& e, const SweepOptions& opt) noexcept {
+  try {
+    const std::string path = st.path(e);
+    {
+      std::lock_guard lock(st.mutex);
+      e.status = EntryStatus::Running;
+      e.started = utc_now_iso8601();
+      ++st.started;
+      st.changed = true;
+    }
+    const auto t0 = clock_type::now();
+    EntryStatus status = EntryStatus::Failed;
+    std::string reason;
+    try {
+      // The run's own progress is not shown inside a sweep (null stream).
+      const RunOutcome r = run_scene(e.run->scene, path, nullptr);
+      status = r.status == RunStatus::Complete ? EntryStatus::Complete : EntryStatus::Failed;
+      reason = r.failure;
+    } catch (const RunFileError& ex) {
+      reason = std::string("run file not written: ") + ex.what();
+    } catch (const std::exception& ex) {
+      reason = ex.what();
+    } catch (...) {
+      reason = "unknown error";
+    }
+    if (status == EntryStatus::Failed && reason.empty()) reason = "unknown error";
+    const double wall = seconds_since(t0);
+
+    std::lock_guard lock(st.mutex);
+    e.status = status;
+    e.reason = reason;
+    e.wall_s = wall;
+    e.finished = utc_now_iso8601();
+    ++st.finished;
+    st.finished_wall += wall;
+    st.changed = true;
+    st.manifest_dirty = true;
+    if (st.joblog) {
+      try {
+        st.joblog->append({e.run->id, e.run->file, e.started, e.finished, wall, to_string(status),
+                           reason, opt.shard.text()});
+      } catch (const std::exception& ex) {
+        st.warn(ex.what());
+      }
+    }
+    st.tick();
+  } catch (...) {
+    // Only bookkeeping can get here (allocation failure); the run file is what counts.
+  }
+}
+
+}  // namespace
+
+SweepOutcome run_sweep(const Sweep& sweep, const SweepOptions& opt) {
+  SweepOutcome out;
+  prepare_sweep_dir(opt.dir);
+  DirLock lock(lock_path(opt.dir, opt.shard));
+
+  SweepState st(sweep, opt);
+  for (const auto& run : sweep.runs)
+    if (opt.shard.contains(run.index)) st.entries.push_back(ManifestEntry{&run});
+  out.runs = st.entries.size();
+
+  // Resume: what is on disk decides what runs (the manifest is only a report).
+  std::vector<ManifestEntry*> todo;
+  for (auto& e : st.entries)
+    if (inspect(st, e, opt.retry_failed, out)) todo.push_back(&e);
+  // Longest expected first; ties in run order (stable sort of run-ordered entries).
+  std::stable_sort(todo.begin(), todo.end(), [](const ManifestEntry* a, const ManifestEntry* b) {
+    return a->run->cost > b->run->cost;
+  });
+  st.to_run = todo.size();
+  const int want = opt.threads > 0 ? opt.threads : omp_get_num_procs();
+  st.threads = static_cast<int>(std::max<std::size_t>(1, std::min<std::size_t>(want, todo.size())));
+  out.threads = st.threads;
+  out.manifest = manifest_path(opt.dir, opt.shard);
+
+  try {
+    st.joblog = std::make_unique<JobLog>(joblog_path(opt.dir, opt.shard));
+  } catch (const std::exception& e) {
+    st.warn(e.what());
+  }
+  st.write_manifest();
+
+  if (opt.progress) {
+    std::size_t failed_kept = 0;
+    for (const auto& e : st.entries) failed_kept += e.status == EntryStatus::Failed;
+    std::string line = "sweep " + sweep.name + ": " + std::to_string(sweep.runs.size()) + " runs";
+    if (opt.shard.count > 1)
+      line += " (shard " + opt.shard.text() + ": " + std::to_string(out.runs) + ")";
+    line += ", " + std::to_string(out.found - failed_kept) + " already complete";
+    if (failed_kept > 0)
+      line += ", " + std::to_string(failed_kept) + " failed before (kept; --retry-failed reruns)";
+    if (out.parts_removed > 0)
+      line += ", " + std::to_string(out.parts_removed) + " leftover .part file(s) removed";
+    if (todo.empty())
+      line += "; nothing to run in " + opt.dir;
+    else
+      line += "; running " + std::to_string(todo.size()) + " on " + std::to_string(st.threads) +
+              " thread" + (st.threads == 1 ? "" : "s") + " into " + opt.dir;
+    *opt.progress << line << std::endl;
+  }
+
+  // Progress and throttled manifest writes while the tasks run.
+  std::mutex wake_mutex;
+  std::condition_variable wake;
+  bool stop = false;
+  std::thread monitor([&] {
+    std::unique_lock wl(wake_mutex);
+    while (!wake.wait_for(wl, std::chrono::milliseconds(250), [&] { return stop; })) {
+      wl.unlock();
+      {
+        std::lock_guard sl(st.mutex);
+        st.tick();
+      }
+      wl.lock();
+    }
+  });
+
+  // One task per run. Tasks may start in any order, so each takes the next run of the
+  // longest-first list itself. No nested parallelism; Eigen is built without threads
+  // (EIGEN_DONT_PARALLELIZE).
+  if (!todo.empty()) {
+    std::atomic<std::size_t> next{0};
+    omp_set_max_active_levels(1);
+#pragma omp parallel num_threads(st.threads)
+#pragma omp single
+    {
+      for (std::size_t t = 0; t < todo.size(); ++t) {
+#pragma omp task
+        execute(st, *todo[next.fetch_add(1)], opt);
+      }
+    }
+  }
+
+  {
+    std::lock_guard wl(wake_mutex);
+    stop = true;
+  }
+  wake.notify_all();
+  monitor.join();
+
+  std::lock_guard sl(st.mutex);
+  st.manifest_dirty = true;
+  st.write_manifest();
+  out.ran = st.finished;
+  for (const auto& e : st.entries) {
+    if (e.status == EntryStatus::Complete) ++out.complete;
+    if (e.status == EntryStatus::Failed) {
+      ++out.failed;
+      out.failures.emplace_back(e.run->file, e.reason);
+    }
+  }
+  out.warnings = st.warnings;
+  out.wall_s = seconds_since(st.t0);
+  return out;
+}
+
+}  // namespace wirepack::sweep

@@ -1,0 +1,55 @@
+#pragma once
+// The sweep driver (DESIGN §5, §6): runs every (point, seed) of a sweep shard as an OpenMP task,
+// longest expected first, each into its own run file; resumes from what is on disk.
+#include <cstddef>
+#include <ostream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "sweep/sweep_config.hpp"
+#include "sweep/sweep_manifest.hpp"
+
+namespace wirepack::sweep {
+
+struct SweepOptions {
+  std::string dir;                   // the sweep directory; run files go to DIR/runs/
+  int threads = 0;                   // concurrent runs; 0: omp_get_num_procs()
+  Shard shard;                       // which runs of the run order this process owns
+  bool retry_failed = false;         // rerun runs whose file says "failed" (otherwise kept)
+  std::ostream* progress = nullptr;  // start line, progress lines, warnings (may be null)
+  double progress_interval_s = 5.0;  // least time between progress lines [s]
+};
+
+struct SweepOutcome {
+  std::size_t runs = 0;           // runs in this shard
+  std::size_t complete = 0;       // complete at the end (found or run)
+  std::size_t failed = 0;         // failed at the end (found or run)
+  std::size_t ran = 0;            // simulated by this invocation
+  std::size_t found = 0;          // finished runs found on disk and kept
+  std::size_t parts_removed = 0;  // .part leftovers of killed runs removed
+  int threads = 0;                // threads used
+  double wall_s = 0;              // [s]
+  std::vector<std::pair<std::string, std::string>> failures;  // (file, reason), run order
+  std::vector<std::string> warnings;  // manifest or joblog writes that failed, unreadable files
+  std::string manifest;               // path of the manifest written
+};
+
+// Creates DIR and DIR/runs; throws InputError when that is impossible or DIR is not writable.
+void prepare_sweep_dir(const std::string& dir);
+
+// Runs the shard's runs that are not finished on disk (DESIGN §5):
+// - resume: a run whose final file exists and says "complete" is kept; "failed" is kept unless
+//   retry_failed; a `.part` leftover is removed and the run redone; a file that cannot be read
+//   or holds another config is redone.
+// - scheduling: one OpenMP task per run in a `parallel` + `single` region of `threads` threads,
+//   nesting off; each task takes the longest remaining run (expected_cost, ties in run order),
+//   so long runs do not end up last.
+// - isolation: a task catches everything; an engine failure is in the run file (run_scene), a
+//   run file that cannot be written is recorded as failed; the sweep goes on.
+// - records: the manifest is rewritten atomically when a run finishes (at most once a second;
+//   always at the end) and the joblog gets one line per finished attempt.
+// Throws InputError before any run when the directory is unusable or the shard is locked.
+SweepOutcome run_sweep(const Sweep& sweep, const SweepOptions& options);
+
+}  // namespace wirepack::sweep
