@@ -5,6 +5,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "sweep/errors.hpp"
+
 namespace wirepack::sweep {
 
 // JSON pointer of `key` inside the object at `parent` ("" is the root), with RFC 6901
@@ -22,5 +24,20 @@ nlohmann::json parse_json_text(const std::string& text, const std::string& sourc
 // Reads and parses a file (see parse_json_text); an unreadable file is an InputError too.
 nlohmann::json load_json_file(const std::string& path,
                               std::vector<std::string>* soft_errors = nullptr);
+
+// Loads `path` strictly and parses it with `parse(json, path)`; problems of the file itself
+// (duplicate keys) are reported together with the parser's in one InputError.
+template <class Parse>
+auto load_and_parse(const std::string& path, Parse parse) {
+  std::vector<std::string> errors;
+  const nlohmann::json j = load_json_file(path, &errors);
+  try {
+    auto parsed = parse(j, path);
+    if (errors.empty()) return parsed;
+  } catch (const InputError& e) {
+    errors.insert(errors.end(), e.messages().begin(), e.messages().end());
+  }
+  throw InputError(errors);
+}
 
 }  // namespace wirepack::sweep

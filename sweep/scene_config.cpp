@@ -450,15 +450,8 @@ Scene parse_scene(const json& j, const std::string& source) {
 }
 
 Scene load_scene(const std::string& path) {
-  std::vector<std::string> errors;  // duplicate keys, reported with the schema's findings
-  const json j = load_json_file(path, &errors);
-  try {
-    Scene scene = parse_scene(j, path);
-    if (errors.empty()) return scene;
-  } catch (const InputError& e) {
-    errors.insert(errors.end(), e.messages().begin(), e.messages().end());
-  }
-  throw InputError(errors);
+  return load_and_parse(path,
+                        [](const json& j, const std::string& src) { return parse_scene(j, src); });
 }
 
 std::string schema_markdown() {

@@ -456,15 +456,8 @@ Sweep parse_sweep(const json& j, const std::string& source) {
 }
 
 Sweep load_sweep(const std::string& path) {
-  std::vector<std::string> errors;  // duplicate keys, reported with the schema's findings
-  const json j = load_json_file(path, &errors);
-  try {
-    Sweep sw = parse_sweep(j, path);
-    if (errors.empty()) return sw;
-  } catch (const InputError& e) {
-    errors.insert(errors.end(), e.messages().begin(), e.messages().end());
-  }
-  throw InputError(errors);
+  return load_and_parse(path,
+                        [](const json& j, const std::string& src) { return parse_sweep(j, src); });
 }
 
 const json& default_sweep_json() {
