@@ -290,7 +290,9 @@ TEST(SelfContact, CrossingEnergyNearAndAwayFromJoints) {
       EXPECT_LE(U / U_hertz, 2.0 + 1e-9);
       EXPECT_EQ(term.contacts(), 2);
     }
-    if (joint == 0.0) EXPECT_NEAR(U / U_hertz, 2.0, 1e-9);
+    if (joint == 0.0) {
+      EXPECT_NEAR(U / U_hertz, 2.0, 1e-9);
+    }
   }
   double U_minus = 0, U_plus = 0;
   SelfContactTerm term(params(l));
