@@ -73,10 +73,10 @@ bool all_finite(const Simulation& sim) {
 // Wire-wire overlap bound of the hard cases. Quasi-static contact forces in these packings
 // give overlaps ~0.02 r; the peaks come from loops snapping through and hitting the packing
 // at several times the feed speed, an inertia effect of the mass scaling: sampled every 20
-// steps, the largest overlap at rho = 10, l <= 20 was 0.18 r at q = 0.01 (default), 0.11 r at
-// q = 0.003. The 0.1 r holds only towards the physical q ~ 5e-4; 0.25 r bounds the
-// default with margin and still means no pass-through (that would need 2 r).
-constexpr double kMaxWireOverlap = 0.25;
+// steps, the largest overlap at rho = 10, l <= 20 was 0.12 r at q = 0.01 (default) and
+// 0.085 r at q = 0.003. The 0.1 r holds from q ~ 0.003 towards the physical q ~ 5e-4;
+// 0.15 r bounds the default and still means no pass-through (that would need 2 r).
+constexpr double kMaxWireOverlap = 0.15;
 
 // Bounds: wall and wire-wire overlaps as above; the bending energy
 // stays below that of the whole wire bent on a radius of 2 r, far above anything a packing in a
