@@ -210,17 +210,7 @@ double WireShellTerm::evaluate(const RodState& s, RodForces* out) {
 double WireShellTerm::accumulate(const RodState& s, RodForces& out) {
   const double U = evaluate(s, &out);
   double kmax = 0.0;
-  max_outside_ = -1.0;
-  for (const FacePair& c : face_pairs_) {
-    kmax = std::max(kmax, hertz_.stiffness(c.delta));
-    // Outward normal of the face (counter-clockwise seen from outside).
-    const auto& v = mesh_.faces[c.f];
-    const Vec3 a = s.shell_x[v[0]], b = s.shell_x[v[1]], cc = s.shell_x[v[2]];
-    const Vec3 out_n = (b - a).cross(cc - a).normalized();
-    const Vec3 P = s.x[c.e] + c.s * (s.x[c.e + 1] - s.x[c.e]);
-    const Vec3 Q = c.w[0] * a + c.w[1] * b + c.w[2] * cc;
-    max_outside_ = std::max(max_outside_, (P - Q).dot(out_n));
-  }
+  for (const FacePair& c : face_pairs_) kmax = std::max(kmax, hertz_.stiffness(c.delta));
   max_stiffness_ = kmax * (friction_ ? 1.0 + p_.friction.stiffness_ratio : 1.0);
   if (!friction_) return U;
   for (const FacePair& c : face_pairs_) friction_->mark(ContactKey{c.e, c.f});

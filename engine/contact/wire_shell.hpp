@@ -56,10 +56,6 @@ class WireShellTerm : public Term {
   // (wire edge, face) pairs whose pieces overlap at the last accumulate.
   int contacts() const { return static_cast<int>(face_pairs_.size()); }
   long rebuilds() const { return rebuilds_; }
-  // Largest distance by which a wire point in contact lies outside the shell's mid-surface
-  // (along the face's outward normal) at the last accumulate [m]; > 0 means the wire has
-  // passed through the shell.
-  double max_outside() const { return max_outside_; }
 
  private:
   // One (wire edge, face) pair in contact: closest points, normal (from shell to wire), overlap
@@ -93,7 +89,6 @@ class WireShellTerm : public Term {
   double face_reach_ = 0;  // largest distance from a face centroid to its vertices [m]
   std::vector<FacePair> face_pairs_;
   double max_stiffness_ = 0;
-  double max_outside_ = -1;
   std::unique_ptr<FrictionHistory> friction_;
 };
 
