@@ -1,5 +1,7 @@
 #include "sweep/json_file.hpp"
 
+#include "sweep/format.hpp"
+
 #include <cerrno>
 #include <cstring>
 #include <fstream>
@@ -158,6 +160,15 @@ json load_json_file(const std::string& path, std::vector<std::string>* soft_erro
   text << in.rdbuf();
   if (in.bad()) throw InputError(path + ": cannot read file");
   return parse_json_text(text.str(), path, soft_errors);
+}
+
+std::string describe_value(const nlohmann::json& v) {
+  if (v.is_object()) return "an object";
+  if (v.is_array()) return "an array";
+  if (v.is_number_float()) return format_number(v.get<double>());
+  std::string s = v.dump();
+  if (s.size() > 40) s = s.substr(0, 37) + "...";
+  return s;
 }
 
 }  // namespace wirepack::sweep

@@ -25,6 +25,9 @@ nlohmann::json parse_json_text(const std::string& text, const std::string& sourc
 nlohmann::json load_json_file(const std::string& path,
                               std::vector<std::string>* soft_errors = nullptr);
 
+// Short description of an offending value for error messages (long values are cut).
+std::string describe_value(const nlohmann::json& v);
+
 // Loads `path` strictly and parses it with `parse(json, path)`; problems of the file itself
 // (duplicate keys) are reported together with the parser's in one InputError.
 template <class Parse>

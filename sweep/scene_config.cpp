@@ -218,16 +218,6 @@ std::string KeySpec::range_text() const {
 
 namespace {
 
-// Short description of an offending value for messages.
-std::string describe(const json& v) {
-  if (v.is_object()) return "an object";
-  if (v.is_array()) return "an array";
-  if (v.is_number_float()) return format_number(v.get<double>());
-  std::string s = v.dump();
-  if (s.size() > 40) s = s.substr(0, 37) + "...";
-  return s;
-}
-
 std::vector<std::string> split_pointer(const std::string& pointer) {
   std::vector<std::string> tokens;
   std::size_t pos = 1;
@@ -291,7 +281,7 @@ class Validator {
           check_keys(value, child);
         else
           fail(child, "must be an object with keys " + join(lv.children.at(child)) + " (got " +
-                          describe(value) + ")");
+                          describe_value(value) + ")");
       }
     }
   }
@@ -305,23 +295,24 @@ class Validator {
       case Type::Choice:
         for (const auto& c : spec.choices)
           if (v.is_string() && v.get<std::string>() == c) return json(c);
-        fail(spec.pointer, "must be one of " + spec.range_text() + " (got " + describe(v) + ")");
+        fail(spec.pointer,
+             "must be one of " + spec.range_text() + " (got " + describe_value(v) + ")");
         return std::nullopt;
       case Type::Number:
         if (!v.is_number()) {
-          fail(spec.pointer, "must be a number (got " + describe(v) + ")");
+          fail(spec.pointer, "must be a number (got " + describe_value(v) + ")");
           return std::nullopt;
         }
         x = v.get<double>();
         if (!std::isfinite(x)) {
-          fail(spec.pointer, "must be a finite number (got " + describe(v) + ")");
+          fail(spec.pointer, "must be a finite number (got " + describe_value(v) + ")");
           return std::nullopt;
         }
         canonical = x;
         break;
       case Type::Integer:
         if (!v.is_number_integer()) {
-          fail(spec.pointer, "must be an integer (got " + describe(v) + ")");
+          fail(spec.pointer, "must be an integer (got " + describe_value(v) + ")");
           return std::nullopt;
         }
         if (v.is_number_unsigned()) {
@@ -342,7 +333,7 @@ class Validator {
       if (!spec.extra_rule.empty())
         range = range.substr(0, range.size() - spec.extra_rule.size() - 2);
       fail(spec.pointer, std::string("must be ") + (spec.min && spec.max ? "in " : "") + range +
-                             " (got " + describe(v) + ")");
+                             " (got " + describe_value(v) + ")");
       return std::nullopt;
     }
     return canonical;
@@ -374,7 +365,7 @@ Lookup lookup(const json& j, const std::string& pointer, const json** out) {
 Scene parse_scene(const json& j, const std::string& source) {
   Validator val(source);
   if (!j.is_object()) {
-    val.fail("", "a scene must be a JSON object (got " + describe(j) + ")");
+    val.fail("", "a scene must be a JSON object (got " + describe_value(j) + ")");
     throw InputError(val.errors());
   }
   val.check_keys(j, "");

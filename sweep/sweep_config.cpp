@@ -33,15 +33,6 @@ std::string join(const std::vector<std::string>& names) {
   return out;
 }
 
-std::string describe(const json& v) {
-  if (v.is_object()) return "an object";
-  if (v.is_array()) return "an array";
-  if (v.is_number_float()) return format_number(v.get<double>());
-  std::string s = v.dump();
-  if (s.size() > 40) s = s.substr(0, 37) + "...";
-  return s;
-}
-
 // The value as the run identity sees it: numbers as doubles, -0 as 0, recursively.
 json canonical(const json& v) {
   if (v.is_number()) {
@@ -161,15 +152,15 @@ void parse_seeds(const json& j, Messages& msg, std::vector<std::uint64_t>& seeds
     const bool pos = v.is_number_unsigned() || v.get<std::int64_t>() > 0;
     if (!pos || v.get<std::uint64_t>() < 1 || v.get<std::uint64_t>() > kMaxRuns) {
       msg.fail("/seeds", "a seed count must be in [1, " + std::to_string(kMaxRuns) + "] (got " +
-                             describe(v) + ")");
+                             describe_value(v) + ")");
       return;
     }
     for (std::uint64_t s = 1; s <= v.get<std::uint64_t>(); ++s) seeds.push_back(s);
     return;
   }
   if (!v.is_array()) {
-    msg.fail("/seeds",
-             "must be a seed count (integer >= 1) or a list of seeds (got " + describe(v) + ")");
+    msg.fail("/seeds", "must be a seed count (integer >= 1) or a list of seeds (got " +
+                           describe_value(v) + ")");
     return;
   }
   if (v.empty()) {
@@ -180,7 +171,7 @@ void parse_seeds(const json& j, Messages& msg, std::vector<std::uint64_t>& seeds
   for (std::size_t i = 0; i < v.size(); ++i) {
     const std::string p = "/seeds/" + std::to_string(i);
     if (!v[i].is_number_unsigned()) {
-      msg.fail(p, "a seed must be an integer >= 0 (got " + describe(v[i]) + ")");
+      msg.fail(p, "a seed must be an integer >= 0 (got " + describe_value(v[i]) + ")");
       continue;
     }
     const auto s = v[i].get<std::uint64_t>();
@@ -217,7 +208,7 @@ void parse_axes(const json& grid, Messages& msg, std::vector<GridAxis>& axes) {
     }
     by_pointer[pointer] = key;
     if (!values.is_array()) {
-      msg.fail(here, "an axis must be a list of values (got " + describe(values) + ")");
+      msg.fail(here, "an axis must be a list of values (got " + describe_value(values) + ")");
       continue;
     }
     if (values.empty()) {
@@ -229,7 +220,7 @@ void parse_axes(const json& grid, Messages& msg, std::vector<GridAxis>& axes) {
     for (std::size_t i = 0; i < values.size(); ++i) {
       for (std::size_t k = 0; k < i; ++k) {
         if (canonical(values[i]) == canonical(values[k])) {
-          msg.fail(here + "/" + std::to_string(i), "duplicate value " + describe(values[i]) +
+          msg.fail(here + "/" + std::to_string(i), "duplicate value " + describe_value(values[i]) +
                                                        " (also at " + here + "/" +
                                                        std::to_string(k) + ")");
           ok = false;
@@ -296,7 +287,7 @@ double expected_cost(const SceneParams& p) {
 Sweep parse_sweep(const json& j, const std::string& source) {
   Messages msg(source);
   if (!j.is_object()) {
-    msg.fail("", "a sweep must be a JSON object (got " + describe(j) + ")");
+    msg.fail("", "a sweep must be a JSON object (got " + describe_value(j) + ")");
     throw InputError(msg.list());
   }
   const auto& keys = sweep_keys();
@@ -314,7 +305,7 @@ Sweep parse_sweep(const json& j, const std::string& source) {
     msg.fail("/name",
              "must be a non-empty string of letters, digits, '.', '_', '-' not starting "
              "with '.' (got " +
-                 describe(*it) + ")");
+                 describe_value(*it) + ")");
   } else {
     sw.name = it->get<std::string>();
   }
@@ -323,7 +314,7 @@ Sweep parse_sweep(const json& j, const std::string& source) {
   if (const auto it = j.find("base"); it == j.end()) {
     msg.fail("/base", "required key is missing (the scene every grid point starts from)");
   } else if (!it->is_object()) {
-    msg.fail("/base", "must be a scene object (got " + describe(*it) + ")");
+    msg.fail("/base", "must be a scene object (got " + describe_value(*it) + ")");
   } else {
     sw.base = *it;
     base_ok = true;
@@ -337,7 +328,7 @@ Sweep parse_sweep(const json& j, const std::string& source) {
     msg.fail("/grid", "required key is missing");
   } else if (!it->is_object()) {
     msg.fail("/grid",
-             "must be an object of axes {\"key\": [values...]} (got " + describe(*it) + ")");
+             "must be an object of axes {\"key\": [values...]} (got " + describe_value(*it) + ")");
   } else {
     parse_axes(*it, msg, sw.axes);
   }
@@ -349,7 +340,7 @@ Sweep parse_sweep(const json& j, const std::string& source) {
     if (it->is_object())
       sw.analysis = *it;
     else
-      msg.fail("/analysis", "must be an object (got " + describe(*it) + ")");
+      msg.fail("/analysis", "must be an object (got " + describe_value(*it) + ")");
   }
 
   // Count before expanding, so a typo like 1e6 values fails fast.
