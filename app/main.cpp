@@ -8,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "sweep/analyze.hpp"
 #include "sweep/errors.hpp"
 #include "sweep/export.hpp"
 #include "sweep/format.hpp"
@@ -119,6 +120,40 @@ int cmd_sweep(const SweepArgs& a) {
   return o.failed > 0 ? kRunFailed : kOk;
 }
 
+// DESIGN §6: CSV tables and plots of a sweep directory. Skipped runs (failed, missing,
+// unreadable) and plot notices go to stderr; where the CSV and plots are goes to stdout.
+int cmd_analyze(const AnalyzeOptions& opt) {
+  const AnalyzeResult r = analyze_sweep(opt);
+  std::cerr << "analyze " << opt.dir << ": " << r.runs << " runs, " << r.complete << " complete, "
+            << r.skipped.size() << " skipped; " << r.points << " grid point"
+            << (r.points == 1 ? "" : "s");
+  if (!r.axes.empty()) {
+    std::cerr << " (swept:";
+    for (const auto& a : r.axes) std::cerr << ' ' << a;
+    std::cerr << ')';
+  }
+  const auto& w = r.settings.D_window;
+  std::cerr << "; D window [" << format_number(w.l_min) << ", " << format_number(w.l_max)
+            << "], distributions at l = " << format_number(r.distribution_l) << '\n';
+  constexpr std::size_t kListed = 20;
+  for (std::size_t i = 0; i < r.skipped.size() && i < kListed; ++i)
+    std::cerr << "  skipped (" << r.skipped[i].status << "): " << r.skipped[i].file
+              << (r.skipped[i].reason.empty() ? "" : ": " + r.skipped[i].reason) << '\n';
+  if (r.skipped.size() > kListed)
+    std::cerr << "  ... and " << r.skipped.size() - kListed << " more (see runs.csv)\n";
+  if (!r.plot_notice.empty()) std::cerr << "  " << r.plot_notice << '\n';
+  std::cout << "CSV:   " << r.out << "/ (";
+  for (std::size_t i = 0; i < r.csv.size(); ++i)
+    std::cout << (i ? ", " : "") << fs::path(r.csv[i]).filename().string();
+  std::cout << ")\n";
+  if (!r.plots.empty())
+    std::cout << "plots: " << (fs::path(r.out) / "plots").string() << "/ (" << r.plots.size()
+              << " PNG)\n";
+  else
+    std::cout << "plots: none; " << r.plot_notice << '\n';
+  return kOk;
+}
+
 int cmd_export(const std::string& run_file, const std::string& csv, const std::string& xmf) {
   try {
     if (!csv.empty()) export_csv(run_file, csv);
@@ -167,6 +202,33 @@ int main(int argc, char** argv) {
   sweep->add_flag("--retry-failed", sweep_args.retry_failed,
                   "run again the runs whose file says failed (kept otherwise)");
 
+  AnalyzeOptions analyze_opt;
+  std::string d_window;
+  double at_l = -1;
+  int bins = 0, resamples = -1;
+  bool no_plots = false;
+  auto* analyze = app.add_subcommand(
+      "analyze",
+      "tables (CSV) and plots of a sweep directory: D curves, scaling exponents, seed-averaged "
+      "series, curvature and loop-length distributions (README section \"Analysis\")");
+  analyze->add_option("dir", analyze_opt.dir, "sweep directory (written by wirepack sweep)")
+      ->required();
+  analyze->add_option("-o,--out", analyze_opt.out, "output directory (default DIR/analysis)");
+  auto* d_window_opt = analyze->add_option(
+      "--d-window", d_window, "L_MIN,L_MAX: l window of D's maximum and mean (default 5,50)");
+  analyze
+      ->add_option("--fit-window", analyze_opt.fit_windows,
+                   "L_MIN,L_MAX (every exponent) or NAME=L_MIN,L_MAX (alpha, beta, gamma, "
+                   "delta, lambda, tau): l window of the power-law fits (default 5,50); "
+                   "repeatable")
+      ->allow_extra_args(false);  // one value per --fit-window, so DIR may follow
+  auto* at_l_opt = analyze->add_option(
+      "--at-l", at_l, "l of the distributions (default: the last snapshot common to the runs)");
+  auto* bins_opt = analyze->add_option("--bins", bins, "histogram bins (default 30)");
+  auto* resamples_opt = analyze->add_option(
+      "--resamples", resamples, "seed-bootstrap resamples of the exponents (default 1000; 0: off)");
+  analyze->add_flag("--no-plots", no_plots, "write the gnuplot scripts but do not run gnuplot");
+
   std::string validate_path;
   auto* validate = app.add_subcommand(
       "validate",
@@ -196,6 +258,14 @@ int main(int argc, char** argv) {
     if (*run) return cmd_run(scene_path, out_path);
     if (*sweep) return cmd_sweep(sweep_args);
     if (*validate) return cmd_validate(validate_path);
+    if (*analyze) {
+      if (*d_window_opt) analyze_opt.D_window = d_window;
+      if (*at_l_opt) analyze_opt.at_l = at_l;
+      if (*bins_opt) analyze_opt.bins = bins;
+      if (*resamples_opt) analyze_opt.resamples = resamples;
+      if (no_plots) analyze_opt.gnuplot.clear();
+      return cmd_analyze(analyze_opt);
+    }
     if (*exp) return cmd_export(run_file, csv_path, xmf_path);
     if (*schema) {
       std::cout << schema_markdown();
