@@ -6,9 +6,10 @@
 namespace wirepack {
 
 enum class ShellKind { Rigid, Elastic };
-// Twist degrees of freedom: Auto = on iff friction is on (mu_s > 0); twist only matters
-// where friction applies torques about the centerline (DESIGN §3, effects on demand).
-enum class TwistMode { Auto, On, Off };
+// An effect a scene may leave out (DESIGN §3, effects on demand). Auto: on where the scene
+// has it (twist: iff friction is on, mu_s > 0, since only friction applies torques about the
+// centerline; shell self-contact: iff the shell is elastic, since a rigid sphere cannot fold).
+enum class EffectMode { Auto, On, Off };
 
 struct WireParams {
   double radius = 0.5e-3;            // r [m]
@@ -23,7 +24,8 @@ struct NumericsParams {
   double quasistatic_ratio = 0.01;  // v / c_axial; sets the mass scaling [-]
   double tolerance = 1e-4;          // local position error per step, in units of r [-]
   double damping_ratio = 0.5;       // subcritical damping ratio zeta [-]
-  TwistMode twist = TwistMode::Auto;
+  EffectMode twist = EffectMode::Auto;
+  EffectMode shell_self_contact = EffectMode::Auto;  // needs an elastic shell
 };
 
 struct SceneParams {
@@ -41,9 +43,12 @@ struct SceneParams {
 
   double R() const { return rho * wire.radius; }  // sphere radius [m]
   bool twist_enabled() const {
-    if (numerics.twist == TwistMode::On) return true;
-    if (numerics.twist == TwistMode::Off) return false;
+    if (numerics.twist == EffectMode::On) return true;
+    if (numerics.twist == EffectMode::Off) return false;
     return mu_s > 0.0;
+  }
+  bool shell_self_contact_enabled() const {
+    return shell == ShellKind::Elastic && numerics.shell_self_contact != EffectMode::Off;
   }
 };
 

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "engine/contact/shell_self_contact.hpp"
 #include "engine/rod/bend.hpp"
 #include "engine/rod/stretch.hpp"
 #include "engine/rod/twist.hpp"
@@ -90,8 +91,12 @@ Assembly assemble(const SceneParams& p) {
     a.mesh = std::make_unique<ShellMesh>(sphere_with_hole(R, mesh_size, hole, mesh_size));
     const ShellMesh& mesh = *a.mesh;
     a.feeder.hole_radius = R * std::sin(sphere_hole_radius(mesh_size, hole) / R);
-    // Masses: the shell's physical density scaled by the wire's mass-scaling factor.
-    const double rho_s = SceneConstants::kShellDensity * a.density_scaled / w.density;
+    // Masses: the shell gets the wire's quasistatic ratio, v / c_s = q with the membrane
+    // wave speed c_s = sqrt(E_s / rho_s), i.e. rho_s = E_s q^2 / v^2. Scaling the shell's
+    // physical density by the wire's factor instead would give a soft shell (eps = 1e3) a
+    // breathing period as long as the time to inject R, v / c_s ~ 0.3: a heavy shell that
+    // lags the wire, where the paper's is quasistatic (v / c_s ~ 0.016).
+    const double rho_s = sm.E * q * q / (v * v);
     a.vertex_mass.assign(mesh.num_vertices(), 0.0);
     for (const auto& f : mesh.faces) {
       const double area =
@@ -121,6 +126,19 @@ Assembly assemble(const SceneParams& p) {
     auto contact = std::make_unique<WireShellTerm>(mesh, ws);
     a.wire_shell = contact.get();
     a.terms.push_back(std::move(contact));
+    if (p.shell_self_contact_enabled()) {
+      // Shell on itself: E* = E_s / (2 (1 - nu_s^2)); pairs within 2 t + one mesh edge of
+      // each other on the rest sphere never touch (only folded-over pieces do).
+      ShellSelfContactParams ss;
+      ss.half_thickness = h;
+      ss.E_star = effective_modulus(sm.E, sm.nu, sm.E, sm.nu);
+      ss.skin = SceneConstants::kSkin * r;
+      ss.damping_ratio = zeta;
+      ss.vertex_mass = m_min;
+      ss.friction = fp;
+      ss.exclusion = ShellSelfContactTerm::suggested_exclusion(mesh, h);
+      a.terms.push_back(std::make_unique<ShellSelfContactTerm>(mesh, ss));
+    }
   }
 
   // Wire self-contact.

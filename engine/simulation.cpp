@@ -192,8 +192,8 @@ Energies Simulation::energies() const {
   e.U_s = impl_->energy_of("stretch");
   e.U_m = impl_->energy_of("membrane");
   e.U_sb = impl_->energy_of("shell_bending");
-  e.U_contact =
-      impl_->energy_of("wall") + impl_->energy_of("self_contact") + impl_->energy_of("wire_shell");
+  e.U_contact = impl_->energy_of("wall") + impl_->energy_of("self_contact") +
+                impl_->energy_of("wire_shell") + impl_->energy_of("shell_self");
   const RodState& s = impl_->state;
   double k = 0.0;
   for (int i = 0; i < s.n_free; ++i) k += s.v[i].squaredNorm();

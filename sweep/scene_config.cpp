@@ -166,9 +166,22 @@ const std::vector<KeySpec>& scene_schema() {
        .doc = "twist degrees of freedom; auto: on iff mu_s > 0",
        .apply =
            [](Scene& s, const json& v) {
-             s.engine.numerics.twist = v == "on"    ? TwistMode::On
-                                       : v == "off" ? TwistMode::Off
-                                                    : TwistMode::Auto;
+             s.engine.numerics.twist = v == "on"    ? EffectMode::On
+                                       : v == "off" ? EffectMode::Off
+                                                    : EffectMode::Auto;
+           }},
+      {.pointer = "/numerics/shell_self_contact",
+       .type = Type::Choice,
+       .need = Need::Optional,
+       .fallback = "auto",
+       .choices = {"auto", "on", "off"},
+       .doc = "shell-shell contact where the shell folds onto itself; auto and on: in elastic "
+              "scenes (a rigid sphere cannot fold)",
+       .apply =
+           [](Scene& s, const json& v) {
+             s.engine.numerics.shell_self_contact = v == "on"    ? EffectMode::On
+                                                    : v == "off" ? EffectMode::Off
+                                                                 : EffectMode::Auto;
            }},
       {.pointer = "/output/every_l",
        .type = Type::Number,

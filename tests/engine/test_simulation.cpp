@@ -175,9 +175,14 @@ TEST(Simulation, RigidFrictionlessSceneAssemblesOnlyItsTerms) {
   Simulation sim(rigid_scene(20, 1.0));
   const auto names = sim.term_names();
   EXPECT_EQ(names, (std::vector<std::string>{"stretch", "bend", "wall", "self_contact"}));
-  EXPECT_TRUE(sim.shell_vertices().empty());
+  EXPECT_TRUE(sim.shell_vertices().empty());  // no mesh is built
+  {
+    SceneParams on = rigid_scene(20, 1.0);
+    on.numerics.shell_self_contact = EffectMode::On;  // a rigid sphere cannot fold: still none
+    EXPECT_EQ(Simulation(on).term_names(), names);
+  }
   SceneParams p = rigid_scene(20, 1.0);
-  p.numerics.twist = TwistMode::On;
+  p.numerics.twist = EffectMode::On;
   Simulation twisted(p);
   const auto n2 = twisted.term_names();
   EXPECT_NE(std::find(n2.begin(), n2.end(), "twist"), n2.end());

@@ -32,15 +32,26 @@ TEST(ElasticSimulation, HeadOnTipIntoAVerySoftShell) {
   run_and_check(elastic_scene(10, 1e4, 0, 3));
 }
 
+// Effects on demand: an elastic frictional scene assembles every term, and each switch
+// that is off removes its term.
 TEST(ElasticSimulation, SceneAssemblesShellTermsAndNoWall) {
-  Simulation sim(elastic_scene(10, 1000, 0.5, 1));
-  const auto names = sim.term_names();
-  for (const char* want : {"membrane", "shell_bending", "wire_shell", "friction", "twist"}) {
-    EXPECT_NE(std::find(names.begin(), names.end(), want), names.end()) << want;
-  }
-  EXPECT_EQ(std::find(names.begin(), names.end(), "wall"), names.end());
+  SceneParams p = elastic_scene(10, 1000, 0.5, 1);
+  Simulation sim(p);
+  EXPECT_EQ(sim.term_names(),
+            (std::vector<std::string>{"stretch", "bend", "twist", "membrane", "shell_bending",
+                                      "wire_shell", "shell_self", "self_contact", "friction"}));
   EXPECT_FALSE(sim.shell_vertices().empty());
   EXPECT_FALSE(sim.shell_triangles().empty());
+  p.numerics.shell_self_contact = EffectMode::Off;
+  p.numerics.twist = EffectMode::Off;
+  EXPECT_EQ(Simulation(p).term_names(),
+            (std::vector<std::string>{"stretch", "bend", "membrane", "shell_bending", "wire_shell",
+                                      "self_contact", "friction"}));
+  p.mu_s = p.mu_d = 0;
+  p.numerics.twist = EffectMode::Auto;
+  EXPECT_EQ(Simulation(p).term_names(),
+            (std::vector<std::string>{"stretch", "bend", "membrane", "shell_bending", "wire_shell",
+                                      "self_contact"}));
 }
 
 }  // namespace

@@ -64,7 +64,7 @@ TEST(SceneConfig, DefaultsFilled) {
   EXPECT_EQ(s.engine.numerics.quasistatic_ratio, 0.01);
   EXPECT_EQ(s.engine.numerics.tolerance, 1e-4);
   EXPECT_EQ(s.engine.numerics.damping_ratio, 0.5);
-  EXPECT_EQ(s.engine.numerics.twist, TwistMode::Auto);
+  EXPECT_EQ(s.engine.numerics.twist, EffectMode::Auto);
   EXPECT_EQ(s.output.every_l, 0.1);
   EXPECT_EQ(s.output.snapshots_every_l, 5);
 
@@ -94,7 +94,7 @@ TEST(SceneConfig, ExplicitValuesKept) {
   const Scene s = parse_scene(j, "scene.json");
   EXPECT_EQ(s.engine.mu_d, 0.2);
   EXPECT_EQ(s.engine.seed, 7u);
-  EXPECT_EQ(s.engine.numerics.twist, TwistMode::Off);
+  EXPECT_EQ(s.engine.numerics.twist, EffectMode::Off);
   EXPECT_EQ(s.engine.numerics.element_length, 1e-3);
   EXPECT_EQ(s.engine.wire.poisson_ratio, 0);
   EXPECT_EQ(s.output.every_l, 0.5);

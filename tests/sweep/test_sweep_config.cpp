@@ -149,7 +149,7 @@ TEST(SweepConfig, NestedAxesByPointerAndFileNames) {
     "seeds": [4]})");
   ASSERT_EQ(sw.runs.size(), 4u);
   EXPECT_EQ(sw.runs[1].scene.engine.numerics.element_length, 1e-3);
-  EXPECT_EQ(sw.runs[1].scene.engine.numerics.twist, TwistMode::On);
+  EXPECT_EQ(sw.runs[1].scene.engine.numerics.twist, EffectMode::On);
   EXPECT_EQ(sw.runs[1].point_values["/numerics/twist"], "on");
   EXPECT_EQ(sw.runs[1].file.rfind("runs/element_length-0.001_twist-on_s4_", 0), 0u)
       << sw.runs[1].file;
