@@ -27,7 +27,6 @@ struct SceneConstants {
   static constexpr double kSkin = 0.5;              // Verlet skin of the self-contact list / r
   static constexpr double kDtFloorFraction = 1e-6;  // step collapse below this x initial stable dt
   static constexpr double kShellPoisson = 1.0 / 3.0;  // nu_s (paper)
-  static constexpr double kShellDensity = 1000.0;     // physical shell density [kg/m^3] (rubber)
 };
 
 struct Assembly {

@@ -163,7 +163,14 @@ RunOutcome run_scene(const Scene& scene, const std::string& out_path, std::ostre
         next_snap = snap_every * (std::floor(l / snap_every) + 1);
       }
       if (progress && wall() >= next_report) {
-        *progress << progress_line(l, l_max, wall()) << std::endl;
+        // The last recorded D and N, so a user sees the morphology emerge.
+        const Series* D = record.find_series("D");
+        const Series* N = record.find_series("N");
+        *progress << progress_line(l, l_max, wall());
+        if (D && N && !D->values.empty())
+          *progress << "  D " << format_number(std::round(D->values.back() * 1e3) / 1e3) << "  N "
+                    << format_number(N->values.back());
+        *progress << std::endl;
         next_report = wall() + 2.0;
       }
     }

@@ -33,7 +33,7 @@ struct FrictionRig {
     commit();
   }
   EvaluateFn eval() {
-    return [this](RodState& st, Vec3List& a, std::vector<double>& alpha, Vec3List&) {
+    return [this](RodState& st, Vec3List& a, std::vector<double>& alpha, Vec3List& shell_a) {
       f.reset(st);
       double omega2 = 0;
       for (auto& term : terms) {
@@ -51,6 +51,7 @@ struct FrictionRig {
       for (size_t j = 0; j < st.theta.size(); ++j) {
         if (!fixed[j] || !fixed[j + 1]) alpha[j] = f.torque[j] / inertia.edge_twist_inertia;
       }
+      shell_a.assign(st.shell_x.size(), Vec3::Zero());  // a shell, if any, is held
       return omega2;
     };
   }
