@@ -2,12 +2,15 @@
 // Exit codes: 0 success, 2 bad input (nothing is written), 1 a run failed.
 #include <unistd.h>
 
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <string>
 
 #include <CLI/CLI.hpp>
 
+#include "sweep/accuracy.hpp"
 #include "sweep/analyze.hpp"
 #include "sweep/errors.hpp"
 #include "sweep/export.hpp"
@@ -65,6 +68,11 @@ int cmd_validate(const std::string& path) {
   if (!is_sweep_json(load_json_file(path, &duplicates))) {
     const Scene scene = load_scene(path);
     std::cout << scene.resolved.dump(2) << '\n';
+    const NumericsPreset& p = *find_numerics_preset(scene.numerics_preset);
+    std::cerr << "numerics preset \"" << p.name << "\": element_length " << p.element_per_r
+              << " r, shell_mesh_size " << p.mesh_per_r << " r, quasistatic_ratio "
+              << p.quasistatic_ratio << ", tolerance " << p.tolerance
+              << " (keys given in the scene override it)\n";
     return kOk;
   }
   const Sweep sweep = load_sweep(path);
@@ -154,6 +162,27 @@ int cmd_analyze(const AnalyzeOptions& opt) {
   return kOk;
 }
 
+int cmd_accuracy(AccuracyOptions o, const std::string& window) {
+  if (!window.empty()) {
+    const auto comma = window.find(',');
+    char* end = nullptr;
+    const double a = comma == std::string::npos ? NAN : std::strtod(window.c_str(), &end);
+    const double b =
+        comma == std::string::npos ? NAN : std::strtod(window.c_str() + comma + 1, &end);
+    if (!std::isfinite(a) || !std::isfinite(b) || *end != '\0' || !(a < b))
+      throw InputError("--window: must be L_MIN,L_MAX with L_MIN < L_MAX (got \"" + window + "\")");
+    o.window = {a, b};
+  }
+  const AccuracyResult r = accuracy_study(o);
+  std::cout << "accuracy: " << r.runs << " complete runs, " << r.ladders << " ladders, " << r.rows
+            << " rows\nCSV:   " << r.csv << '\n';
+  if (!r.plot.empty())
+    std::cout << "plot:  " << r.plot << '\n';
+  else
+    std::cout << "plot:  none; " << r.plot_notice << '\n';
+  return kOk;
+}
+
 int cmd_export(const std::string& run_file, const std::string& csv, const std::string& xmf) {
   try {
     if (!csv.empty()) export_csv(run_file, csv);
@@ -229,6 +258,20 @@ int main(int argc, char** argv) {
       "--resamples", resamples, "seed-bootstrap resamples of the exponents (default 1000; 0: off)");
   analyze->add_flag("--no-plots", no_plots, "write the gnuplot scripts but do not run gnuplot");
 
+  AccuracyOptions accuracy_opt;
+  std::string accuracy_window;
+  bool accuracy_no_plots = false;
+  auto* accuracy = app.add_subcommand(
+      "accuracy",
+      "accuracy-vs-time study of sweep directories whose grids are ladders over numerics "
+      "(element_length, shell_mesh_size, quasistatic_ratio, tolerance): error against the "
+      "finest setting and wall time per setting, CSV and a Pareto plot (README \"Accuracy\")");
+  accuracy->add_option("dirs", accuracy_opt.dirs, "sweep directories (pooled)")->required();
+  accuracy->add_option("-o,--out", accuracy_opt.out, "output directory (default DIR/accuracy)");
+  accuracy->add_option("--window", accuracy_window,
+                       "L_MIN,L_MAX: l window of the errors and of D_max (default 5,50)");
+  accuracy->add_flag("--no-plots", accuracy_no_plots, "write the gnuplot script only");
+
   std::string validate_path;
   auto* validate = app.add_subcommand(
       "validate",
@@ -265,6 +308,10 @@ int main(int argc, char** argv) {
       if (*resamples_opt) analyze_opt.resamples = resamples;
       if (no_plots) analyze_opt.gnuplot.clear();
       return cmd_analyze(analyze_opt);
+    }
+    if (*accuracy) {
+      if (accuracy_no_plots) accuracy_opt.gnuplot.clear();
+      return cmd_accuracy(accuracy_opt, accuracy_window);
     }
     if (*exp) return cmd_export(run_file, csv_path, xmf_path);
     if (*schema) {

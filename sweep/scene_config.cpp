@@ -122,7 +122,7 @@ const std::vector<KeySpec>& scene_schema() {
       {.pointer = "/numerics/element_length",
        .type = Type::Number,
        .need = Need::Optional,
-       .fallback = 0.5e-3,
+       .default_text = "preset: r (wire/radius)",
        .min = Bound{0, false},
        .extra_rule = "<= R/4",
        .doc = "rest length of a wire element [m]",
@@ -130,14 +130,14 @@ const std::vector<KeySpec>& scene_schema() {
       {.pointer = "/numerics/shell_mesh_size",
        .type = Type::Number,
        .need = Need::Optional,
-       .fallback = 1.0e-3,
+       .default_text = "preset: 2 r",
        .min = Bound{0, false},
        .doc = "target shell triangle edge length [m] (elastic shell only)",
        .apply = [](Scene& s, const json& v) { s.engine.numerics.shell_mesh_size = num(v); }},
       {.pointer = "/numerics/quasistatic_ratio",
        .type = Type::Number,
        .need = Need::Optional,
-       .fallback = 0.01,
+       .default_text = "preset: 0.01",
        .min = Bound{0, false},
        .max = Bound{0.5, true},
        .doc = "injection speed over the wire's axial wave speed; sets the mass scaling [-]",
@@ -145,7 +145,7 @@ const std::vector<KeySpec>& scene_schema() {
       {.pointer = "/numerics/tolerance",
        .type = Type::Number,
        .need = Need::Optional,
-       .fallback = 1e-4,
+       .default_text = "preset: 1e-4",
        .min = Bound{0, false},
        .max = Bound{1, true},
        .doc = "local position error allowed per step, in units of r [-]",
@@ -200,6 +200,32 @@ const std::vector<KeySpec>& scene_schema() {
   };
   return table;
 }
+
+const std::vector<NumericsPreset>& numerics_presets() {
+  // Chosen from the accuracy-vs-time study (results/accuracy, README "Presets").
+  static const std::vector<NumericsPreset> table = {
+      {"fast", 2.0, 4.0, 0.03, 1e-3, "quick looks and broad scans"},
+      {"default", 1.0, 2.0, 0.01, 1e-4, "production nights"},
+      {"accurate", 0.5, 1.0, 0.003, 3e-5, "convergence checks and references"},
+  };
+  return table;
+}
+
+const NumericsPreset* find_numerics_preset(const std::string& name) {
+  for (const auto& p : numerics_presets())
+    if (p.name == name) return &p;
+  return nullptr;
+}
+
+namespace {
+
+std::string preset_names() {
+  std::string out;
+  for (const auto& p : numerics_presets()) out += (out.empty() ? "\"" : ", \"") + p.name + "\"";
+  return out;
+}
+
+}  // namespace
 
 std::string KeySpec::type_name() const {
   switch (type) {
@@ -267,6 +293,7 @@ const Levels& levels() {
         if (i + 1 < tokens.size()) out.groups.insert(level);
       }
     }
+    out.children["/numerics"].insert("preset");  // handled beside the table (numerics_presets)
     return out;
   }();
   return lv;
@@ -381,7 +408,25 @@ Scene parse_scene(const json& j, const std::string& source) {
     val.fail("", "a scene must be a JSON object (got " + describe_value(j) + ")");
     throw InputError(val.errors());
   }
-  val.check_keys(j, "");
+  // Numerics preset: "numerics": "NAME" is read as {"preset": "NAME"}; the preset fills the
+  // defaults of the four resolution knobs below (keys given beside it win).
+  json in = j;
+  std::string preset = "default";
+  if (const auto it = j.find("numerics"); it != j.end()) {
+    const bool as_string = it->is_string();
+    const bool in_object = it->is_object() && it->contains("preset");
+    if (as_string || in_object) {
+      const json& name = as_string ? *it : it->at("preset");
+      if (name.is_string() && find_numerics_preset(name.get<std::string>()))
+        preset = name.get<std::string>();
+      else
+        val.fail(as_string ? "/numerics" : "/numerics/preset",
+                 "must be a preset: one of " + preset_names() + ", or an object of numerics " +
+                     "keys (got " + describe_value(name) + ")");
+    }
+    if (as_string) in["numerics"] = json::object();
+  }
+  val.check_keys(in, "");
   const auto& schema = scene_schema();
 
   // The shell kind decides whether xi and eps are required; unknown if /shell is invalid.
@@ -396,9 +441,11 @@ Scene parse_scene(const json& j, const std::string& source) {
 
   // Table pass: type, finiteness and range of every key; defaults for missing ones.
   std::map<std::string, json> values;  // pointer -> canonical valid value
+  std::set<std::string> given;         // pointers present in the input
   for (const auto& spec : schema) {
     const json* v = nullptr;
-    const Lookup found = lookup(j, spec.pointer, &v);
+    const Lookup found = lookup(in, spec.pointer, &v);
+    if (found == Lookup::Found) given.insert(spec.pointer);
     if (found == Lookup::ParentInvalid) continue;
     if (found == Lookup::Found) {
       if (auto c = val.check_value(spec, *v)) values[spec.pointer] = *c;
@@ -425,9 +472,19 @@ Scene parse_scene(const json& j, const std::string& source) {
   bool mu_d_given = false;
   {
     const json* v = nullptr;
-    mu_d_given = lookup(j, "/mu_d", &v) == Lookup::Found;
+    mu_d_given = lookup(in, "/mu_d", &v) == Lookup::Found;
   }
   if (has("/mu_s") && !mu_d_given) values["/mu_d"] = 0.9 * get("/mu_s");
+  const NumericsPreset& ps = *find_numerics_preset(preset);
+  const auto fill = [&](const char* p, double x) {
+    if (!given.contains(p)) values[p] = x;
+  };
+  if (has("/wire/radius")) {
+    fill("/numerics/element_length", ps.element_per_r * get("/wire/radius"));
+    fill("/numerics/shell_mesh_size", ps.mesh_per_r * get("/wire/radius"));
+  }
+  fill("/numerics/quasistatic_ratio", ps.quasistatic_ratio);
+  fill("/numerics/tolerance", ps.tolerance);
   if (has("/mu_s") && has("/mu_d") && get("/mu_d") > get("/mu_s"))
     val.fail("/mu_d", "must be <= mu_s = " + format_number(get("/mu_s")) + " (got " +
                           format_number(get("/mu_d")) + ")");
@@ -450,6 +507,7 @@ Scene parse_scene(const json& j, const std::string& source) {
     spec.apply(scene, it->second);
     scene.resolved[json::json_pointer(spec.pointer)] = it->second;
   }
+  scene.numerics_preset = preset;
   return scene;
 }
 
@@ -477,6 +535,16 @@ std::string schema_markdown() {
     out << "| `" << spec.pointer << "` | " << spec.type_name() << " | " << def << " | "
         << spec.range_text() << " | " << spec.doc << " |\n";
   }
+  out << "\nNumerics presets (`\"numerics\": \"NAME\"`, or `\"preset\": \"NAME\"` beside "
+         "numerics keys, which override it; default \"default\"; `wirepack validate` prints the "
+         "one "
+         "used, and section \"Accuracy and presets\" what each costs and buys):\n\n";
+  out << "| preset | element_length | shell_mesh_size | quasistatic_ratio | tolerance | use |\n";
+  out << "| --- | --- | --- | --- | --- | --- |\n";
+  for (const auto& p : numerics_presets())
+    out << "| `" << p.name << "` | " << format_number(p.element_per_r) << " r | "
+        << format_number(p.mesh_per_r) << " r | " << format_number(p.quasistatic_ratio) << " | "
+        << format_number(p.tolerance) << " | " << p.summary << " |\n";
   return out.str();
 }
 

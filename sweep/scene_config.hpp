@@ -23,7 +23,23 @@ struct Scene {
   SceneParams engine;       // what the engine sees
   OutputParams output;      // what the run loop records
   nlohmann::json resolved;  // the validated input with every default filled (sorted keys)
+  std::string numerics_preset = "default";  // the preset the numerics defaults came from
 };
+
+// A numerics preset (README "Presets"): `"numerics": "NAME"` or `{"preset": "NAME", ...}` sets
+// these four defaults; keys given beside "preset" override them. Not part of the resolved
+// scene (a run's identity is its resolved values, so "default" and no preset are one run).
+struct NumericsPreset {
+  std::string name;          // "fast" | "default" | "accurate"
+  double element_per_r;      // element_length / wire radius [-]
+  double mesh_per_r;         // shell_mesh_size / wire radius [-]
+  double quasistatic_ratio;  // [-]
+  double tolerance;          // [r]
+  std::string summary;       // what it buys, from the accuracy-vs-time study
+};
+const std::vector<NumericsPreset>& numerics_presets();
+// The preset called `name`, or nullptr.
+const NumericsPreset* find_numerics_preset(const std::string& name);
 
 // One row of the schema table.
 struct KeySpec {

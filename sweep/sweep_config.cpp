@@ -113,10 +113,12 @@ std::vector<std::string> valid_axes() {
     const bool nested = spec.pointer.find('/', 1) != std::string::npos;
     out.push_back(nested ? spec.pointer : spec.pointer.substr(1));
   }
+  out.push_back("/numerics/preset");
   return out;
 }
 
 bool is_scene_key(const std::string& pointer) {
+  if (pointer == "/numerics/preset") return true;
   for (const auto& spec : scene_schema())
     if (spec.pointer == pointer) return true;
   return false;
@@ -135,6 +137,7 @@ void set_at(json& scene, const std::string& pointer, const json& value) {
     }
     json& child = (*node)[tok];  // creates an object level if missing
     if (child.is_null()) child = json::object();
+    if (tok == "numerics" && child.is_string()) child = json{{"preset", child}};  // a preset name
     if (!child.is_object()) return;
     node = &child;
     pos = next + 1;
@@ -455,12 +458,18 @@ const json& default_sweep_json() {
   // A D(mu_s) curve on the rigid sphere (rho = 20) until Engine III exists; xi and eps are
   // ignored by a rigid shell and already set, so switching to the elastic default
   // (rho = 20, xi = 10, eps = 1e3) is "shell": "elastic" here and in scenes/default.sweep.json.
-  static const json j = {
-      {"name", "default"},
-      {"base", {{"rho", 20}, {"xi", 10}, {"eps", 1000}, {"shell", "rigid"}, {"l_max", 20}}},
-      {"grid", {{"mu_s", {0, 0.5, 1.0}}}},
-      {"seeds", 2},
-      {"analysis", json::object()}};
+  // Numerics: the "default" preset (README "Accuracy and presets").
+  static const json j = {{"name", "default"},
+                         {"base",
+                          {{"rho", 20},
+                           {"xi", 10},
+                           {"eps", 1000},
+                           {"shell", "rigid"},
+                           {"l_max", 20},
+                           {"numerics", "default"}}},
+                         {"grid", {{"mu_s", {0, 0.5, 1.0}}}},
+                         {"seeds", 2},
+                         {"analysis", json::object()}};
   return j;
 }
 

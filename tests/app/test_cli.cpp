@@ -98,6 +98,16 @@ TEST(Cli, ValidatePrintsResolvedScene) {
   EXPECT_EQ(j["l_max"], 50.0);
   EXPECT_EQ(j["/numerics/element_length"_json_pointer], 0.5e-3);
   EXPECT_FALSE(j.contains("xi"));
+  EXPECT_NE(r.err.find("numerics preset \"default\": element_length 1 r"), std::string::npos)
+      << r.err;
+  dir.write("f.json", R"({"rho": 20, "mu_s": 0, "shell": "rigid", "numerics": "fast"})");
+  const Result f = wirepack(dir, "validate f.json");
+  ASSERT_EQ(f.code, 0) << f.err;
+  EXPECT_EQ(nlohmann::json::parse(f.out)["/numerics/quasistatic_ratio"_json_pointer], 0.03);
+  EXPECT_NE(f.err.find("numerics preset \"fast\": element_length 2 r, shell_mesh_size 4 r, "
+                       "quasistatic_ratio 0.03, tolerance 0.001"),
+            std::string::npos)
+      << f.err;
 
   for (const char* scene : {"rigid_default.json", "elastic_example.json"}) {
     const Result s =

@@ -292,5 +292,79 @@ TEST(SceneConfig, SchemaMarkdown) {
   EXPECT_NE(md.find("| `/mu_d` | number | 0.9 mu_s | >= 0, <= mu_s |"), std::string::npos);
 }
 
+// Presets (README "Presets"): each resolves to its documented settings, scaled by r.
+TEST(SceneConfig, NumericsPresetsResolveToTheirSettings) {
+  ASSERT_EQ(numerics_presets().size(), 3u);
+  for (const auto& p : numerics_presets()) {
+    for (const double r : {0.5e-3, 0.25e-3}) {
+      json j = minimal_elastic();
+      j["wire"] = {{"radius", r}};
+      j["numerics"] = p.name;
+      const Scene s = parse_scene(j, "scene.json");
+      EXPECT_EQ(s.numerics_preset, p.name);
+      EXPECT_DOUBLE_EQ(s.engine.numerics.element_length, p.element_per_r * r) << p.name;
+      EXPECT_DOUBLE_EQ(s.engine.numerics.shell_mesh_size, p.mesh_per_r * r) << p.name;
+      EXPECT_EQ(s.engine.numerics.quasistatic_ratio, p.quasistatic_ratio) << p.name;
+      EXPECT_EQ(s.engine.numerics.tolerance, p.tolerance) << p.name;
+      EXPECT_EQ(s.engine.numerics.damping_ratio, 0.5);  // not a preset knob
+      EXPECT_FALSE(s.resolved["numerics"].contains("preset"));
+    }
+  }
+  const NumericsPreset& fast = *find_numerics_preset("fast");
+  EXPECT_EQ(fast.element_per_r, 2.0);
+  EXPECT_EQ(fast.quasistatic_ratio, 0.03);
+  const NumericsPreset& acc = *find_numerics_preset("accurate");
+  EXPECT_EQ(acc.element_per_r, 0.5);
+  EXPECT_EQ(acc.tolerance, 3e-5);
+  EXPECT_EQ(find_numerics_preset("slow"), nullptr);
+}
+
+TEST(SceneConfig, DefaultPresetIsTheSameSceneAsNoPreset) {
+  json a = minimal_elastic();
+  json b = minimal_elastic();
+  b["numerics"] = "default";
+  json c = minimal_elastic();
+  c["numerics"] = {{"preset", "default"}};
+  const Scene sa = parse_scene(a, "a.json");
+  EXPECT_EQ(sa.numerics_preset, "default");
+  EXPECT_EQ(sa.resolved, parse_scene(b, "b.json").resolved);
+  EXPECT_EQ(sa.resolved, parse_scene(c, "c.json").resolved);
+  EXPECT_EQ(sa.engine.numerics.element_length, 0.5e-3);  // r at the default radius
+  EXPECT_EQ(sa.engine.numerics.shell_mesh_size, 1e-3);   // 2 r
+}
+
+TEST(SceneConfig, KeysBesideAPresetOverrideIt) {
+  json j = minimal_elastic();
+  j["numerics"] = {{"preset", "accurate"}, {"tolerance", 1e-3}, {"twist", "off"}};
+  const Scene s = parse_scene(j, "scene.json");
+  EXPECT_EQ(s.engine.numerics.tolerance, 1e-3);
+  EXPECT_EQ(s.engine.numerics.quasistatic_ratio, 0.003);
+  EXPECT_EQ(s.engine.numerics.element_length, 0.25e-3);
+  EXPECT_EQ(s.engine.numerics.twist, EffectMode::Off);
+}
+
+TEST(SceneConfig, UnknownPresetIsAnError) {
+  json j = minimal_elastic();
+  j["numerics"] = "fastest";
+  expect_error(j, "/numerics", "must be a preset: one of \"fast\", \"default\", \"accurate\"");
+  j["numerics"] = {{"preset", 3}, {"tolerance", -1}};
+  expect_error(j, "/numerics/preset", "got 3");
+  expect_error(j, "/numerics/tolerance", "must be in (0, 1]");
+  j["numerics"] = 7;
+  expect_error(j, "/numerics", "must be an object");
+  // The preset's element length is checked like a given one: 2 r > R/4 at rho = 4.
+  j = minimal_rigid();
+  j["rho"] = 4;
+  j["numerics"] = "fast";
+  expect_error(j, "/numerics/element_length", "must be <= R/4");
+}
+
+TEST(SceneConfig, SchemaListsThePresets) {
+  const std::string md = schema_markdown();
+  EXPECT_NE(md.find("| `fast` | 2 r | 4 r | 0.03 | 0.001 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| `/numerics/element_length` | number | preset: r (wire/radius) |"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace wirepack::sweep

@@ -317,5 +317,18 @@ TEST(SweepConfig, ExpectedCostFollowsTheWork) {
   EXPECT_GT(expected_cost(elastic), base);
 }
 
+TEST(SweepConfig, PresetAxisAndNumericsKeysOverAPresetBase) {
+  const Sweep sw = parse_text(R"({"name": "p", "base": {"rho": 20, "mu_s": 0, "shell": "rigid",
+      "numerics": "fast"}, "grid": {"/numerics/preset": ["fast", "accurate"],
+      "/numerics/tolerance": [1e-2]}, "seeds": 1})");
+  ASSERT_EQ(sw.runs.size(), 2u);
+  EXPECT_EQ(sw.runs[0].scene.numerics_preset, "fast");
+  EXPECT_EQ(sw.runs[0].scene.engine.numerics.element_length, 1e-3);
+  EXPECT_EQ(sw.runs[1].scene.numerics_preset, "accurate");
+  EXPECT_EQ(sw.runs[1].scene.engine.numerics.element_length, 0.25e-3);
+  for (const auto& r : sw.runs) EXPECT_EQ(r.scene.engine.numerics.tolerance, 1e-2);
+  EXPECT_NE(sw.runs[0].id, sw.runs[1].id);
+}
+
 }  // namespace
 }  // namespace wirepack::sweep

@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# The accuracy-vs-time study (README "Accuracy and presets"): runs the one-knob ladders of
+# scenes/accuracy/*.sweep.json (rigid: rho = 20, mu_s = 0, l = 20; elastic: rho = 20, xi = 10,
+# eps = 1e3, mu_s = 0 and 0.5, l = 8) into sweeps/accuracy/NAME, then `wirepack accuracy` over
+# them into OUT (default results/accuracy). Resumable: rerun it and finished runs are kept.
+# Usage: scripts/accuracy_study.sh [rigid|elastic|all] [THREADS] [OUT]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+which=${1:-all}
+threads=${2:-$(nproc)}
+out=${3:-results/accuracy}
+case $which in rigid | elastic | all) ;; *) echo "usage: $0 [rigid|elastic|all] [THREADS] [OUT]" >&2; exit 2 ;; esac
+[ -x build/wirepack ] || scripts/setup.sh
+dirs=()
+for f in scenes/accuracy/*.sweep.json; do
+  name=$(basename "$f" .sweep.json)
+  [ "$which" = all ] || [[ $name == "$which"_* ]] || continue
+  build/wirepack sweep "$f" --out "sweeps/accuracy/$name" --threads "$threads" > /dev/null
+  dirs+=("sweeps/accuracy/$name")
+done
+build/wirepack accuracy "${dirs[@]}" --out "$out"
