@@ -23,7 +23,7 @@ struct NumericsParams {
   double shell_mesh_size = 1.0e-3;  // target shell triangle edge [m] (elastic shell only)
   double quasistatic_ratio = 0.01;  // v / c_axial; sets the mass scaling [-]
   double tolerance = 1e-4;          // local position error per step, in units of r [-]
-  double damping_ratio = 0.5;       // subcritical damping ratio zeta [-]
+  double damping_ratio = 0.05;      // subcritical damping ratio zeta [-]
   EffectMode twist = EffectMode::Auto;
   EffectMode shell_self_contact = EffectMode::Auto;  // needs an elastic shell
 };

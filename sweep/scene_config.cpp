@@ -153,7 +153,7 @@ const std::vector<KeySpec>& scene_schema() {
       {.pointer = "/numerics/damping_ratio",
        .type = Type::Number,
        .need = Need::Optional,
-       .fallback = 0.5,
+       .fallback = 0.05,
        .min = Bound{0, true},
        .max = Bound{1, false},
        .doc = "viscous damping ratio zeta, subcritical [-]",

@@ -63,7 +63,7 @@ TEST(SceneConfig, DefaultsFilled) {
   EXPECT_EQ(s.engine.numerics.shell_mesh_size, 1e-3);
   EXPECT_EQ(s.engine.numerics.quasistatic_ratio, 0.01);
   EXPECT_EQ(s.engine.numerics.tolerance, 1e-4);
-  EXPECT_EQ(s.engine.numerics.damping_ratio, 0.5);
+  EXPECT_EQ(s.engine.numerics.damping_ratio, 0.05);
   EXPECT_EQ(s.engine.numerics.twist, EffectMode::Auto);
   EXPECT_EQ(s.output.every_l, 0.1);
   EXPECT_EQ(s.output.snapshots_every_l, 5);
@@ -306,7 +306,7 @@ TEST(SceneConfig, NumericsPresetsResolveToTheirSettings) {
       EXPECT_DOUBLE_EQ(s.engine.numerics.shell_mesh_size, p.mesh_per_r * r) << p.name;
       EXPECT_EQ(s.engine.numerics.quasistatic_ratio, p.quasistatic_ratio) << p.name;
       EXPECT_EQ(s.engine.numerics.tolerance, p.tolerance) << p.name;
-      EXPECT_EQ(s.engine.numerics.damping_ratio, 0.5);  // not a preset knob
+      EXPECT_EQ(s.engine.numerics.damping_ratio, 0.05);  // not a preset knob
       EXPECT_FALSE(s.resolved["numerics"].contains("preset"));
     }
   }
