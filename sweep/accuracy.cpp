@@ -133,6 +133,7 @@ void label_scenes(std::vector<Run>& runs) {
         const auto it = m2.find(k);
         if (it == m2.end() || it->second != v) varying.insert(k);
       }
+  if (varying.empty()) varying = {"/shell", "/mu_s"};  // one scene: say which
   for (auto& r : runs) {
     std::string label;
     const auto& m = leaves[r.scene];

@@ -6,6 +6,7 @@
 #include <map>
 #include <numbers>
 #include <set>
+#include <utility>
 
 #include "sweep/format.hpp"
 #include "sweep/json_file.hpp"
@@ -385,8 +386,11 @@ Sweep parse_sweep(const json& j, const std::string& source) {
         run.index = sw.runs.size();
         run.point = p;
         run.point_values = json::object();
-        for (const auto& axis : sw.axes)
-          run.point_values[axis.key] = s.resolved[json::json_pointer(axis.pointer)];
+        for (const auto& axis : sw.axes)  // the preset is not in the resolved scene
+          run.point_values[axis.key] =
+              axis.pointer == "/numerics/preset"
+                  ? json(s.numerics_preset)
+                  : std::as_const(s.resolved).at(json::json_pointer(axis.pointer));
         run.seed = seed;
         run.id = run_id(s.resolved);
         run.file = run_file_name(sw.axes, at, seed, run.id);

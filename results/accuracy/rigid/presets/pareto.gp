@@ -1,0 +1,25 @@
+# wirepack accuracy: error against wall time (Pareto front)
+# Render: gnuplot pareto.gp
+if (!exists("out")) out = "pareto.png"
+if (strstrt(GPVAL_TERMINALS, "pngcairo") > 0) {
+  set terminal pngcairo noenhanced size 500,400
+} else {
+  set terminal png noenhanced size 500,400
+}
+set output out
+set grid
+set key top left
+$d0_0 << EOD
+2.067473199 0.031985279858310185 0
+0.145338924 0.14391671794793498 0
+EOD
+reset
+set grid
+set key top right
+set title "accuracy vs time\nmu_s=0 shell=rigid"
+set xlabel "wall time per run [s]"
+set ylabel "rel. RMS error of U_b hat, K (larger)"
+set logscale x
+set logscale y
+plot $d0_0 using 1:2 with points pointtype 7 pointsize 0.5 title "combined"
+set output
