@@ -37,6 +37,19 @@ double cells_along(double ext, double h) {
 
 void CellGrid::find_pairs(std::span<const Vec3> points, double cutoff,
                           std::vector<std::pair<int, int>>& pairs) {
+  scan(points, -1, cutoff, pairs);
+}
+
+void CellGrid::find_pairs_between(std::span<const Vec3> points, int split, double cutoff,
+                                  std::vector<std::pair<int, int>>& pairs) {
+  if (split < 0 || static_cast<std::size_t>(split) > points.size()) {
+    throw std::invalid_argument("CellGrid::find_pairs_between: split outside [0, n]");
+  }
+  scan(points, split, cutoff, pairs);
+}
+
+void CellGrid::scan(std::span<const Vec3> points, int split, double cutoff,
+                    std::vector<std::pair<int, int>>& pairs) {
   pairs.clear();
   if (!(cutoff > 0.0) || !std::isfinite(cutoff)) {
     throw std::invalid_argument("CellGrid::find_pairs: cutoff must be finite and > 0");
@@ -106,6 +119,8 @@ void CellGrid::find_pairs(std::span<const Vec3> points, double cutoff,
 
   // Scan own cell (pairs a < b within it) and the 13 forward neighbours (all pairs).
   const double cutoff2 = cutoff * cutoff;  // [m^2]
+  // With two sets, a pair within one set is skipped (split < 0: one set, nothing skipped).
+  const auto same_set = [split](int i, int j) { return split >= 0 && (i < split) == (j < split); };
   for (int iz = 0; iz < nz; ++iz) {
     for (int iy = 0; iy < ny; ++iy) {
       for (int ix = 0; ix < nx; ++ix) {
@@ -117,6 +132,7 @@ void CellGrid::find_pairs(std::span<const Vec3> points, double cutoff,
           const int i = sorted_[a];
           for (int b = a + 1; b < end; ++b) {
             const int j = sorted_[b];  // j > i: stable sort
+            if (same_set(i, j)) continue;
             if ((points[i] - points[j]).squaredNorm() < cutoff2) pairs.emplace_back(i, j);
           }
         }
@@ -133,6 +149,7 @@ void CellGrid::find_pairs(std::span<const Vec3> points, double cutoff,
             const Vec3& xi = points[i];
             for (int b = nbegin; b < nend; ++b) {
               const int j = sorted_[b];
+              if (same_set(i, j)) continue;
               if ((xi - points[j]).squaredNorm() < cutoff2) {
                 pairs.emplace_back(std::min(i, j), std::max(i, j));
               }

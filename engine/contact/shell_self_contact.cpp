@@ -139,7 +139,7 @@ void ShellSelfContactTerm::rebuild(const RodState& s) {
     points_[nv + f] = g;
     for (int k = 0; k < 3; ++k) face_reach = std::max(face_reach, (x[v[k]] - g).norm());
   }
-  grid_vt_.find_pairs(points_, reach_vt + face_reach, broad_);
+  grid_vt_.find_pairs_between(points_, nv, reach_vt + face_reach, broad_);
   for (const auto& [i, j] : broad_) {
     if (i >= nv || j < nv) continue;  // only (vertex, face) pairs
     const int v = i, f = j - nv;

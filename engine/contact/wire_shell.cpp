@@ -53,6 +53,8 @@ void WireShellTerm::rebuild(const RodState& s) {
   x_at_build_.assign(s.x.begin(), s.x.begin() + std::min(ne + 1, s.num_nodes()));
   shell_at_build_ = s.shell_x;
   candidates_.clear();
+  seg_edge_.clear();
+  seg_vert_.clear();
   if (ne < 1 || nf == 0) return;
   points_.resize(ne + nf);
   double lmax = 0.0;
@@ -68,7 +70,7 @@ void WireShellTerm::rebuild(const RodState& s) {
     for (int k = 0; k < 3; ++k) face_reach_ = std::max(face_reach_, (s.shell_x[v[k]] - c).norm());
   }
   const double reach = p_.r + p_.half_thickness + p_.skin;
-  grid_.find_pairs(points_, 0.5 * lmax + face_reach_ + reach, broad_);
+  grid_.find_pairs_between(points_, ne, 0.5 * lmax + face_reach_ + reach, broad_);
   for (const auto& [i, j] : broad_) {
     if (i >= ne || j < ne) continue;  // only (wire edge, face) pairs
     const int e = i, f = j - ne;
@@ -78,6 +80,21 @@ void WireShellTerm::rebuild(const RodState& s) {
     if (c.dist2 < reach * reach) candidates_.emplace_back(e, f);
   }
   std::sort(candidates_.begin(), candidates_.end());
+  // Unique (wire edge, shell edge) and (wire edge, shell vertex) pairs of the candidates, for
+  // the inclusion-exclusion corrections: an edge is the overlap of its two faces, an interior
+  // vertex the overlap of its closed fan; the rim's pieces overlap nothing. Built here, not per
+  // evaluation: they change only with the candidates.
+  for (const auto& [e, f] : candidates_) {
+    for (int k = 0; k < 3; ++k) {
+      const int ek = mesh_.face_edges[f][k], vk = mesh_.faces[f][k];
+      if (mesh_.edge_faces[ek][1] >= 0) seg_edge_.emplace_back(e, ek);
+      if (!boundary_vertex_[vk]) seg_vert_.emplace_back(e, vk);
+    }
+  }
+  for (auto* list : {&seg_edge_, &seg_vert_}) {
+    std::sort(list->begin(), list->end());
+    list->erase(std::unique(list->begin(), list->end()), list->end());
+  }
 }
 
 int WireShellTerm::find_face_pair(int e, int f) const {
@@ -163,23 +180,8 @@ double WireShellTerm::evaluate(const RodState& s, RodForces* out) {
     }
     for (int i = 0; i < n_own; ++i) face_pairs_[owners[i]].force += signed_force / n_own;
   };
-  // Unique (wire edge, shell edge) and (wire edge, shell vertex) pairs near the candidates.
-  std::vector<std::pair<int, int>> seg_edge, seg_vert;
-  for (const auto& [e, f] : candidates_) {
-    // Inclusion-exclusion over the slabs: an edge is the overlap of its two faces, an
-    // interior vertex the overlap of its closed fan; the rim's pieces overlap nothing.
-    for (int k = 0; k < 3; ++k) {
-      const int ek = mesh_.face_edges[f][k], vk = mesh_.faces[f][k];
-      if (mesh_.edge_faces[ek][1] >= 0) seg_edge.emplace_back(e, ek);
-      if (!boundary_vertex_[vk]) seg_vert.emplace_back(e, vk);
-    }
-  }
-  for (auto* list : {&seg_edge, &seg_vert}) {
-    std::sort(list->begin(), list->end());
-    list->erase(std::unique(list->begin(), list->end()), list->end());
-  }
-  const Vec3 no_n = Vec3::UnitZ();       // only for exactly coincident points (measure zero)
-  for (const auto& [e, k] : seg_edge) {  // - (wire edge, shell edge)
+  const Vec3 no_n = Vec3::UnitZ();        // only for exactly coincident points (measure zero)
+  for (const auto& [e, k] : seg_edge_) {  // - (wire edge, shell edge)
     const int v0 = mesh_.edges[k][0], v1 = mesh_.edges[k][1];
     const SegmentClosest c =
         segment_segment_closest(s.x[e], s.x[e + 1], s.shell_x[v0], s.shell_x[v1]);
@@ -192,7 +194,7 @@ double WireShellTerm::evaluate(const RodState& s, RodForces* out) {
     const int faces[2] = {ef[0], ef[1]};
     share(f, &e, 1, faces, ef[1] >= 0 ? 2 : 1);
   }
-  for (const auto& [e, vtx] : seg_vert) {  // + (wire edge, shell vertex)
+  for (const auto& [e, vtx] : seg_vert_) {  // + (wire edge, shell vertex)
     const Vec3& Q = s.shell_x[vtx];
     const Vec3 d = s.x[e + 1] - s.x[e];
     const double dd = d.squaredNorm();

@@ -83,6 +83,8 @@ class WireShellTerm : public Term {
   Vec3List points_;
   std::vector<std::pair<int, int>> broad_;
   std::vector<std::pair<int, int>> candidates_;  // (wire edge, face), sorted
+  std::vector<std::pair<int, int>> seg_edge_;    // (wire edge, shell edge) of the candidates
+  std::vector<std::pair<int, int>> seg_vert_;    // (wire edge, interior vertex) of them
   Vec3List x_at_build_, shell_at_build_;
   int edges_at_build_ = -1;
   long rebuilds_ = 0;

@@ -158,6 +158,32 @@ TEST(CellGrid, ReusedGridGivesFreshAnswers) {
   EXPECT_EQ(got.capacity(), cap);
 }
 
+// Two sets: exactly the all-pairs answer restricted to i < split <= j, in (i, j) order.
+TEST(CellGrid, PairsBetweenTwoSetsMatchFilteredAllPairs) {
+  std::mt19937_64 rng(3);
+  CellGrid grid;
+  for (int n : {2, 10, 500, 2000}) {
+    const Vec3List x = uniform_cloud(n, 1.0, rng);
+    for (int split : {0, 1, n / 3, n - 1, n}) {
+      for (double cutoff : {0.03, 0.2}) {
+        Pairs want;
+        for (const auto& p : all_pairs(x, cutoff))
+          if (p.first < split && p.second >= split) want.push_back(p);
+        Pairs got;
+        grid.find_pairs_between(x, split, cutoff, got);
+        EXPECT_EQ(got, want) << "n = " << n << ", split = " << split;
+      }
+    }
+    // The grid still answers the one-set question afterwards.
+    expect_same_as_all_pairs(grid, x, 0.1);
+  }
+  Pairs got;
+  EXPECT_THROW(grid.find_pairs_between(uniform_cloud(5, 1.0, rng), 6, 0.1, got),
+               std::invalid_argument);
+  EXPECT_THROW(grid.find_pairs_between(uniform_cloud(5, 1.0, rng), -1, 0.1, got),
+               std::invalid_argument);
+}
+
 TEST(CellGrid, RejectsBadInput) {
   CellGrid grid;
   Pairs got;
