@@ -6,21 +6,17 @@
 // the terms assembled; counters: us per step, ns per wire node-step, shell faces (0: no mesh
 // was built), peak resident memory.
 #include <benchmark/benchmark.h>
-#include <sys/resource.h>
 
 #include <string>
 
+#include "bench/peak_memory.hpp"
 #include "engine/simulation.hpp"
 
 namespace {
 
 using namespace wirepack;
 
-double peak_rss_mib() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return u.ru_maxrss / 1024.0;
-}
+using bench::peak_rss_mib;
 
 struct Variant {
   const char* name;

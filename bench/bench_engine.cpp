@@ -2,10 +2,10 @@
 // (a) the elastic forces alone and (b) a whole adaptive step with wall and self-contact at a
 // packed state (rho = 20, l ~ 10). Peak resident memory is reported beside the time.
 #include <benchmark/benchmark.h>
-#include <sys/resource.h>
 
 #include <random>
 
+#include "bench/peak_memory.hpp"
 #include "engine/rod/bend.hpp"
 #include "engine/rod/frames.hpp"
 #include "engine/rod/material.hpp"
@@ -17,11 +17,7 @@ namespace {
 
 using namespace wirepack;
 
-double peak_rss_mib() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return u.ru_maxrss / 1024.0;
-}
+using bench::peak_rss_mib;
 
 RodState random_walk_rod(int n, bool twist) {
   std::mt19937_64 rng(3);

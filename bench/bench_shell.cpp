@@ -4,10 +4,10 @@
 // adaptive steps of the elastic reference scene (rho = 20, xi = 10, eps = 1e3) at l ~ 5 with
 // wire-shell contact, mu_s = 0 and 0.5. Peak resident memory is reported beside the time.
 #include <benchmark/benchmark.h>
-#include <sys/resource.h>
 
 #include <random>
 
+#include "bench/peak_memory.hpp"
 #include "engine/shell/bending.hpp"
 #include "engine/shell/membrane.hpp"
 #include "engine/shell/mesh_builders.hpp"
@@ -17,11 +17,7 @@ namespace {
 
 using namespace wirepack;
 
-double peak_rss_mib() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return u.ru_maxrss / 1024.0;
-}
+using bench::peak_rss_mib;
 
 // (a) Membrane and/or bending forces; argument: 1 membrane, 2 bending, 3 both.
 void BM_ShellForces(benchmark::State& state) {
