@@ -204,7 +204,7 @@ const std::vector<KeySpec>& scene_schema() {
 const std::vector<NumericsPreset>& numerics_presets() {
   // Chosen from the accuracy-vs-time study (results/accuracy, README "Presets").
   static const std::vector<NumericsPreset> table = {
-      {"fast", 2.0, 4.0, 0.03, 1e-3, "quick looks and broad scans"},
+      {"fast", 2.0, 4.0, 0.01, 1e-3, "quick looks and broad scans"},
       {"default", 1.0, 2.0, 0.01, 1e-4, "production nights"},
       {"accurate", 0.5, 1.0, 0.003, 3e-5, "convergence checks and references"},
   };

@@ -103,9 +103,9 @@ TEST(Cli, ValidatePrintsResolvedScene) {
   dir.write("f.json", R"({"rho": 20, "mu_s": 0, "shell": "rigid", "numerics": "fast"})");
   const Result f = wirepack(dir, "validate f.json");
   ASSERT_EQ(f.code, 0) << f.err;
-  EXPECT_EQ(nlohmann::json::parse(f.out)["/numerics/quasistatic_ratio"_json_pointer], 0.03);
+  EXPECT_EQ(nlohmann::json::parse(f.out)["/numerics/tolerance"_json_pointer], 1e-3);
   EXPECT_NE(f.err.find("numerics preset \"fast\": element_length 2 r, shell_mesh_size 4 r, "
-                       "quasistatic_ratio 0.03, tolerance 0.001"),
+                       "quasistatic_ratio 0.01, tolerance 0.001"),
             std::string::npos)
       << f.err;
 

@@ -143,9 +143,9 @@ TEST(Accuracy, PresetsAreComparedWithTheFinestRun) {
     EXPECT_EQ(c[col["knob"]], "combined");
     const bool is_ref = c[col["is_reference"]] == "1";
     refs += is_ref;
-    // The reference is the default preset (element r, q 0.01); fast has 2 r and q 0.03.
+    // The reference is the default preset (element r, tolerance 1e-4); fast has 2 r and 1e-3.
     EXPECT_EQ(std::stod(c[col["element_length"]]), is_ref ? 5e-4 : 1e-3);
-    EXPECT_EQ(std::stod(c[col["quasistatic_ratio"]]), is_ref ? 0.01 : 0.03);
+    EXPECT_EQ(std::stod(c[col["tolerance"]]), is_ref ? 1e-4 : 1e-3);
     if (!is_ref) {
       EXPECT_GT(std::stod(c[col["err_U_b_hat"]]), 0);
     }
