@@ -172,9 +172,26 @@ bool same(double a, double b) {
 struct Row {
   const Run* run;
   const Run* ref;
-  std::string knob;  // a knob name or "seed"
+  std::string knob;  // a knob name, "combined" or "seed"
   double value;
+  double l_to = NaN;              // end of the error window
+  std::vector<double> errs = {};  // relative RMS errors of compared_series(), in order
+  double err_UK = NaN;            // the larger of the U_b_hat and K errors
 };
+
+// The errors of `row.run` against `row.ref` over [w.l_min, min(w.l_max, both l_end)], once.
+void compare(Row& row, const LWindow& w) {
+  const Run& r = *row.run;
+  const Run& ref = *row.ref;
+  row.l_to = std::min({w.l_max, r.l_end, ref.l_end});
+  row.errs.clear();
+  for (const auto& s : compared_series())
+    row.errs.push_back(relative_rms_error(r.series.at("l"), r.series.at(s), ref.series.at("l"),
+                                          ref.series.at(s), w.l_min, row.l_to));
+  row.err_UK = std::isfinite(row.errs[0]) && std::isfinite(row.errs[1])
+                   ? std::max(row.errs[0], row.errs[1])
+                   : NaN;
+}
 
 std::string csv_text(const std::vector<Row>& rows, const LWindow& w) {
   std::ostringstream out;
@@ -184,14 +201,6 @@ std::string csv_text(const std::vector<Row>& rows, const LWindow& w) {
   for (const Row& row : rows) {
     const Run& r = *row.run;
     const Run& ref = *row.ref;
-    const double hi = std::min({w.l_max, r.l_end, ref.l_end});
-    std::vector<double> errs;
-    for (const auto& s : compared_series())
-      errs.push_back(relative_rms_error(r.series.at("l"), r.series.at(s), ref.series.at("l"),
-                                        ref.series.at(s), w.l_min, hi));
-    const double err_max = std::isfinite(errs[0]) && std::isfinite(errs[1])
-                               ? std::max(errs[0], errs[1])
-                               : NaN;  // U_b_hat and K
     std::string label = r.label;
     if (label.find(',') != std::string::npos) label = "\"" + label + "\"";
     out << label << ',' << r.seed << ',' << row.knob << ',' << num(row.value) << ','
@@ -200,8 +209,8 @@ std::string csv_text(const std::vector<Row>& rows, const LWindow& w) {
     out << ',' << num(r.l_end) << ',' << num(r.steps) << ',' << num(r.wall_s) << ','
         << num(r.wall_s / ref.wall_s) << ',' << num(r.D_max) << ','
         << num(std::abs(r.D_max - ref.D_max));
-    for (const double e : errs) out << ',' << num(e);
-    out << ',' << num(err_max) << ',' << num(w.l_min) << ',' << num(hi) << ','
+    for (const double e : row.errs) out << ',' << num(e);
+    out << ',' << num(row.err_UK) << ',' << num(w.l_min) << ',' << num(row.l_to) << ','
         << fs::path(r.file).filename().string() << ',' << fs::path(ref.file).filename().string()
         << '\n';
   }
@@ -332,6 +341,7 @@ AccuracyResult accuracy_study(const AccuracyOptions& o) {
     std::sort(cs.begin(), cs.end(), [](const Run* a, const Run* b) { return a->seed < b->seed; });
     for (const Run* r : cs) rows.push_back({r, cs.front(), "seed", static_cast<double>(r->seed)});
   }
+  for (Row& row : rows) compare(row, o.window);
   std::stable_sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) {
     if (a.run->label != b.run->label) return a.run->label < b.run->label;
     if ((a.knob == "seed") != (b.knob == "seed")) return b.knob == "seed";
@@ -358,11 +368,7 @@ AccuracyResult accuracy_study(const AccuracyOptions& o) {
   for (const Row& row : rows) {
     const Run& r = *row.run;
     if (row.run == row.ref) continue;
-    const double hi = std::min({o.window.l_max, r.l_end, row.ref->l_end});
-    double e = 0;  // err_UK: the larger of the U_b_hat and K errors
-    for (const char* s : {"U_b_hat", "K"})
-      e = std::max(e, relative_rms_error(r.series.at("l"), r.series.at(s), row.ref->series.at("l"),
-                                         row.ref->series.at(s), o.window.l_min, hi));
+    const double e = row.err_UK;
     if (row.knob == "seed") {
       const auto [f, fresh] = floor.try_emplace(r.label, e);
       if (!fresh) f->second = std::isnan(f->second) ? e : std::max(f->second, e);
