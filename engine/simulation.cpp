@@ -47,6 +47,8 @@ struct Simulation::Impl {
   // Generalised accelerations of the dynamic DOFs; returns omega_max^2 [1/s^2].
   double evaluate(RodState& s, Vec3List& a, std::vector<double>& alpha, Vec3List& shell_a) {
     forces.reset(s);
+    // Reference frames follow the new positions (twist only), from the tangents reset() found.
+    update_reference_frames(s, forces.edge_t);
     for (auto& t : assembly.terms) t->begin_trial(integrator.trial_dt());
     double omega2 = 0.0;
     for (size_t k = 0; k < assembly.terms.size(); ++k) {
@@ -83,8 +85,9 @@ struct Simulation::Impl {
       return evaluate(s, a, al, sa);
     };
   }
+  // The reference frames are updated inside evaluate(), which every position change precedes.
   static PositionsChangedFn moved_fn() {
-    return [](RodState& s) { update_reference_frames(s); };
+    return [](RodState&) {};
   }
 
   // Accepts the history of the last evaluation (friction springs).

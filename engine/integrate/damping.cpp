@@ -6,11 +6,10 @@ void RodDamping::add_forces(const RodState& s, RodForces& out) const {
   const int n = s.num_nodes();
   const int nf = s.n_free;
   if (n < 2) return;
-  // Edge tangents are needed for both the axial and the transverse parts.
+  // Edge tangents (computed by out.reset) serve both the axial and the transverse parts.
   Vec3 t_prev = Vec3::Zero();
   for (int j = 0; j < n - 1 && j < nf; ++j) {
-    const Vec3 e = s.x[j + 1] - s.x[j];
-    const Vec3 t = e.normalized();
+    const Vec3& t = out.edge_t[j];
     // Axial dashpot on edge j (acts on the dynamic nodes only; the guide is kinematic).
     const double rate = (s.v[j + 1] - s.v[j]).dot(t);
     const Vec3 fa = (p_.eta_axial * rate) * t;

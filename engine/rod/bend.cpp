@@ -14,17 +14,13 @@ constexpr double kMinOnePlusCos = 1e-9;
 double BendTerm::accumulate(const RodState& s, RodForces& out) {
   const int n = s.num_nodes();
   double U = 0.0;
-  double min_rest = std::numeric_limits<double>::infinity();
-  for (int j = 0; j + 1 < n; ++j) min_rest = std::min(min_rest, s.rest_length[j]);
-  min_rest_ = min_rest;
+  min_rest_ = out.min_rest_length;
   if (n < 3) return 0.0;
-  Vec3 e0 = s.x[1] - s.x[0];
-  double len0 = e0.norm();
-  Vec3 t0 = e0 / len0;
+  const Vec3List& t = out.edge_t;
+  const std::vector<double>& len = out.edge_len;
   for (int i = 1; i + 1 < n; ++i) {
-    const Vec3 e1 = s.x[i + 1] - s.x[i];
-    const double len1 = e1.norm();
-    const Vec3 t1 = e1 / len1;
+    const Vec3& t0 = t[i - 1];
+    const Vec3& t1 = t[i];
     const double c = t0.dot(t1);
     const double opc = std::max(1.0 + c, kMinOnePlusCos);
     const double lbar = 0.5 * (s.rest_length[i - 1] + s.rest_length[i]);
@@ -32,13 +28,11 @@ double BendTerm::accumulate(const RodState& s, RodForces& out) {
     U += k * (1.0 - c) / opc;
     const double dU_dc = -2.0 * k / (opc * opc);
     // dc/de0 = (t1 - c t0) / |e0|,  dc/de1 = (t0 - c t1) / |e1|
-    const Vec3 g0 = (dU_dc / len0) * (t1 - c * t0);
-    const Vec3 g1 = (dU_dc / len1) * (t0 - c * t1);
+    const Vec3 g0 = (dU_dc / len[i - 1]) * (t1 - c * t0);
+    const Vec3 g1 = (dU_dc / len[i]) * (t0 - c * t1);
     out.f[i - 1] += g0;
     out.f[i] += g1 - g0;
     out.f[i + 1] -= g1;
-    t0 = t1;
-    len0 = len1;
   }
   return U;
 }

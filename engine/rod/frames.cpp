@@ -25,9 +25,16 @@ double signed_angle(const Vec3& a, const Vec3& b, const Vec3& n) {
 
 void update_reference_frames(RodState& s) {
   if (!s.has_twist()) return;
+  RodForces scratch;
+  scratch.reset(s);
+  update_reference_frames(s, scratch.edge_t);
+}
+
+void update_reference_frames(RodState& s, const Vec3List& edge_t) {
+  if (!s.has_twist()) return;
   const int ne = s.num_edges();
   for (int j = 0; j < ne; ++j) {
-    const Vec3 t = (s.x[j + 1] - s.x[j]).normalized();
+    const Vec3& t = edge_t[j];
     Vec3 d = parallel_transport(s.ref1[j], s.ref_tangent[j], t);
     d -= d.dot(t) * t;  // remove round-off drift out of the normal plane
     s.ref1[j] = d.normalized();

@@ -17,6 +17,8 @@ double signed_angle(const Vec3& a, const Vec3& b, const Vec3& n);
 // tangent, and recomputes ref_twist (unwrapped against its previous value so that it is
 // continuous in time). No-op when the state has no twist DOFs.
 void update_reference_frames(RodState& s);
+// The same with the current unit edge tangents given (n-1; RodForces::edge_t after reset(s)).
+void update_reference_frames(RodState& s, const Vec3List& edge_t);
 
 // Initialises ref1 / ref_tangent / ref_twist for edges [first, n-1) that have none yet
 // (new edges added by the feeder), with a director normal to the tangent.

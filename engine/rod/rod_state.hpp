@@ -34,16 +34,19 @@ struct RodState {
 };
 
 // Generalised forces: -dU/dx per node (n) [N], -dU/dtheta per edge (n-1) [N m] and -dU/dx
-// per shell vertex (nv) [N].
+// per shell vertex (nv) [N]; plus the edge geometry of the state they are evaluated at, computed
+// once by reset() and read by every rod term, the damping and the reference frames (each used
+// to recompute the same square roots and divisions).
 struct RodForces {
   Vec3List f;
   std::vector<double> torque;
   Vec3List shell_f;
-  void reset(const RodState& s) {
-    f.assign(s.x.size(), Vec3::Zero());
-    torque.assign(s.theta.size(), 0.0);
-    shell_f.assign(s.shell_x.size(), Vec3::Zero());
-  }
+  std::vector<double> edge_len;  // |x_{j+1} - x_j| (n-1) [m]
+  Vec3List edge_t;               // unit tangent (x_{j+1} - x_j) / edge_len (n-1)
+  double min_rest_length = 0;    // smallest rest length (inf for a single node) [m]
+
+  // Zeroes the forces and computes the geometry of s; every accumulate() needs it for the same s.
+  void reset(const RodState& s);
 };
 
 }  // namespace wirepack

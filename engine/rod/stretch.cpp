@@ -7,11 +7,10 @@ namespace wirepack {
 
 double StretchTerm::accumulate(const RodState& s, RodForces& out) {
   double U = 0.0;
-  double min_rest = std::numeric_limits<double>::infinity();
   const int ne = s.num_edges();
   for (int j = 0; j < ne; ++j) {
     const Vec3 e = s.x[j + 1] - s.x[j];
-    const double len = e.norm();
+    const double len = out.edge_len[j];
     const double lbar = s.rest_length[j];
     const double strain = len / lbar - 1.0;
     U += 0.5 * EA_ * strain * strain * lbar;
@@ -19,9 +18,8 @@ double StretchTerm::accumulate(const RodState& s, RodForces& out) {
     const Vec3 g = (EA_ * strain / len) * e;
     out.f[j] += g;
     out.f[j + 1] -= g;
-    min_rest = std::min(min_rest, lbar);
   }
-  min_rest_ = min_rest;
+  min_rest_ = out.min_rest_length;
   return U;
 }
 

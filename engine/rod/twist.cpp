@@ -9,9 +9,7 @@ namespace wirepack {
 
 double TwistTerm::accumulate(const RodState& s, RodForces& out) {
   const int n = s.num_nodes();
-  double min_rest = std::numeric_limits<double>::infinity();
-  for (int j = 0; j + 1 < n; ++j) min_rest = std::min(min_rest, s.rest_length[j]);
-  min_rest_ = min_rest;
+  min_rest_ = out.min_rest_length;
   double U = 0.0;
   for (int i = 1; i + 1 < n; ++i) {
     const double lbar = 0.5 * (s.rest_length[i - 1] + s.rest_length[i]);
@@ -20,12 +18,10 @@ double TwistTerm::accumulate(const RodState& s, RodForces& out) {
     const double dU_dm = GJ_ * m / lbar;
     out.torque[i] -= dU_dm;
     out.torque[i - 1] += dU_dm;
-    const Vec3 e0 = s.x[i] - s.x[i - 1];
-    const Vec3 e1 = s.x[i + 1] - s.x[i];
-    const double len0 = e0.norm();
-    const double len1 = e1.norm();
-    const Vec3 t0 = e0 / len0;
-    const Vec3 t1 = e1 / len1;
+    const double len0 = out.edge_len[i - 1];
+    const double len1 = out.edge_len[i];
+    const Vec3& t0 = out.edge_t[i - 1];
+    const Vec3& t1 = out.edge_t[i];
     const Vec3 kb = (2.0 / std::max(1.0 + t0.dot(t1), 1e-9)) * t0.cross(t1);
     const Vec3 g0 = (dU_dm / (2.0 * len0)) * kb;  // dU/de^{i-1}
     const Vec3 g1 = (dU_dm / (2.0 * len1)) * kb;  // dU/de^i

@@ -1,0 +1,26 @@
+#include "engine/rod/rod_state.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace wirepack {
+
+void RodForces::reset(const RodState& s) {
+  f.assign(s.x.size(), Vec3::Zero());
+  torque.assign(s.theta.size(), 0.0);
+  shell_f.assign(s.shell_x.size(), Vec3::Zero());
+  const int ne = s.num_edges();
+  edge_len.resize(std::max(ne, 0));
+  edge_t.resize(std::max(ne, 0));
+  double min_rest = std::numeric_limits<double>::infinity();
+  for (int j = 0; j < ne; ++j) {
+    const Vec3 e = s.x[j + 1] - s.x[j];
+    const double len = e.norm();
+    edge_len[j] = len;
+    edge_t[j] = e / len;  // same rounding as e.normalized()
+    min_rest = std::min(min_rest, s.rest_length[j]);
+  }
+  min_rest_length = min_rest;
+}
+
+}  // namespace wirepack
