@@ -98,13 +98,14 @@ struct Simulation::Impl {
   void check_state() const {
     const double R = params.R();
     const double r = params.wire.radius;
+    const double beyond2 = (R + r) * (R + r);
     for (int i = 0; i < state.n_free; ++i) {
       const Vec3& x = state.x[i];
       if (!x.allFinite() || !state.v[i].allFinite()) {
         throw SimulationError("non-finite state (NaN/Inf) at node " + std::to_string(i));
       }
       // A node centre a whole radius beyond the wall has passed through it.
-      if (assembly.wall && x.norm() > R + r && x[2] > feeder.z_hole()) {
+      if (assembly.wall && x.squaredNorm() > beyond2 && x[2] > feeder.z_hole()) {
         throw SimulationError("wire node " + std::to_string(i) + " tunnelled through the wall");
       }
     }

@@ -21,7 +21,11 @@ void SelfContactTerm::maybe_rebuild(const RodState& s) {
   if (!need) {
     const double limit2 = 0.25 * p_.skin * p_.skin;
     const int nn = std::min(ne + 1, s.num_nodes());
-    for (int i = 0; i < nn && !need; ++i) need = (s.x[i] - x_at_build_[i]).squaredNorm() > limit2;
+    moved2_.resize(nn);
+    for (int i = 0; i < nn && !need; ++i) {
+      moved2_[i] = (s.x[i] - x_at_build_[i]).squaredNorm();
+      need = moved2_[i] > limit2;
+    }
   }
   if (need) rebuild(s);
 }
@@ -31,6 +35,7 @@ void SelfContactTerm::rebuild(const RodState& s) {
   ++rebuilds_;
   edges_at_build_ = ne;
   x_at_build_.assign(s.x.begin(), s.x.begin() + std::min(ne + 1, s.num_nodes()));
+  moved2_.assign(x_at_build_.size(), 0.0);
   candidates_.clear();
   if (ne < 2) return;
   midpoints_.resize(ne);
@@ -45,7 +50,10 @@ void SelfContactTerm::rebuild(const RodState& s) {
   for (const auto& [a, b] : broad_) {
     if (b - a <= exclude_) continue;
     const SegmentClosest c = segment_segment_closest(s.x[a], s.x[a + 1], s.x[b], s.x[b + 1]);
-    if (c.dist2 < reach * reach) candidates_.emplace_back(a, b);
+    if (c.dist2 >= reach * reach) continue;
+    // Slack less a margin far above the rounding of the distances (1e-9 r).
+    const double slack = std::max(std::sqrt(c.dist2) - 2.0 * p_.r - 1e-9 * p_.r, 0.0);
+    candidates_.push_back(Candidate{a, b, 0.25 * slack * slack});
   }
 }
 
@@ -55,7 +63,12 @@ double SelfContactTerm::evaluate(const RodState& s, RodForces* out) {
   const double m_eff = 0.5 * p_.node_mass;
   double U = 0.0;
   contacts_.clear();
-  for (const auto& [a, b] : candidates_) {
+  for (const Candidate& cand : candidates_) {
+    const int a = cand.a, b = cand.b;
+    // Cannot touch yet: each end moved less than half the slack since the build.
+    const double moved2 =
+        std::max(std::max(moved2_[a], moved2_[a + 1]), std::max(moved2_[b], moved2_[b + 1]));
+    if (moved2 < cand.slack2_4) continue;
     const Vec3 &a0 = s.x[a], &a1 = s.x[a + 1], &b0 = s.x[b], &b1 = s.x[b + 1];
     const SegmentClosest c = segment_segment_closest(a0, a1, b0, b1);
     if (c.dist2 >= contact * contact) continue;
@@ -106,8 +119,8 @@ double SelfContactTerm::accumulate(const RodState& s, RodForces& out) {
           (1.0 - c.s) * s.v[a] + c.s * s.v[a + 1] - (1.0 - c.t) * s.v[b] - c.t * s.v[b + 1];
       Vec3 ta, tb;
       if (twist) {
-        ta = (s.x[a + 1] - s.x[a]).normalized();
-        tb = (s.x[b + 1] - s.x[b]).normalized();
+        ta = out.edge_t[a];
+        tb = out.edge_t[b];
         v_rel += s.omega[a] * ta.cross(-r * n) - s.omega[b] * tb.cross(r * n);
       }
       const ContactKey nb[8] = {{a + 1, b},     {a - 1, b},     {a, b + 1},     {a, b - 1},

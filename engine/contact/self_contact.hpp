@@ -83,9 +83,17 @@ class SelfContactTerm : public Term {
   int exclude_;  // pairs with |a - b| <= exclude_ never interact
   CellGrid grid_;
   std::vector<Vec3> midpoints_;
-  std::vector<std::pair<int, int>> broad_;       // broad-phase pairs (scratch)
-  std::vector<std::pair<int, int>> candidates_;  // Verlet list
+  std::vector<std::pair<int, int>> broad_;  // broad-phase pairs (scratch)
+  // Verlet list: edge pairs within 2 r + skin at the build, each with a quarter of its squared
+  // slack (distance at the build - 2 r); while every node of the pair has moved less than
+  // sqrt(slack2_4) the pair cannot touch (its distance shrinks by at most the two edges' moves).
+  struct Candidate {
+    int a, b;
+    double slack2_4;  // [m^2]
+  };
+  std::vector<Candidate> candidates_;
   Vec3List x_at_build_;
+  std::vector<double> moved2_;  // |x - x_at_build|^2 per node at the last check [m^2]
   int edges_at_build_ = -1;
   long rebuilds_ = 0;
   std::vector<WireContact> contacts_;

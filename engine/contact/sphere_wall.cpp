@@ -1,6 +1,7 @@
 #include "engine/contact/sphere_wall.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace wirepack {
 
@@ -8,7 +9,8 @@ SphereWallTerm::SphereWallTerm(const SphereWallParams& p)
     : p_(p),
       wall_(Hertz::from(p.E_star, p.r * p.R / (p.R - p.r))),
       rim_(Hertz::from(p.E_star, p.r)),
-      z_rim_(-std::sqrt(p.R * p.R - p.hole_radius * p.hole_radius)) {
+      z_rim_(-std::sqrt(p.R * p.R - p.hole_radius * p.hole_radius)),
+      free_radius2_((p.R - p.r) * (p.R - p.r) * (1.0 - 1e-12)) {
   if (p.friction.enabled()) friction_ = std::make_unique<FrictionHistory>(p.friction);
 }
 
@@ -27,7 +29,13 @@ bool SphereWallTerm::overlap(const Vec3& x, double& delta, Vec3& normal, bool& r
     normal = d / dist;
     return true;
   }
-  const double dist = x.norm();
+  // Clearly inside (|x| < R - r with a margin far above rounding): no square root needed.
+  const double sq = x.squaredNorm();
+  if (sq < free_radius2_) {
+    delta = -1.0;
+    return false;
+  }
+  const double dist = std::sqrt(sq);
   delta = dist + p_.r - p_.R;
   if (delta <= 0.0 || dist == 0.0) return false;
   normal = x / dist;
@@ -70,10 +78,7 @@ double SphereWallTerm::accumulate(const RodState& s, RodForces& out) {
     const int e_lo = std::max(i - 1, 0), e_hi = std::min(i, s.num_edges() - 1);
     const double w = e_hi > e_lo ? 0.5 : 1.0;
     if (twist) {
-      for (int e = e_lo; e <= e_hi; ++e) {
-        const Vec3 te = (s.x[e + 1] - s.x[e]).normalized();
-        v_surf += w * s.omega[e] * te.cross(r * n);
-      }
+      for (int e = e_lo; e <= e_hi; ++e) v_surf += w * s.omega[e] * out.edge_t[e].cross(r * n);
     }
     // The wall is body B (at rest); the normal of the contact points from B to A: -n.
     const ContactKey nb[2] = {{i - 1, -1}, {i + 1, -1}};
@@ -81,10 +86,7 @@ double SphereWallTerm::accumulate(const RodState& s, RodForces& out) {
     out.f[i] += ft;
     if (twist) {
       // Torque of the surface force about the centreline, shared by the two edges.
-      for (int e = e_lo; e <= e_hi; ++e) {
-        const Vec3 te = (s.x[e + 1] - s.x[e]).normalized();
-        out.torque[e] += w * (r * n).cross(ft).dot(te);
-      }
+      for (int e = e_lo; e <= e_hi; ++e) out.torque[e] += w * (r * n).cross(ft).dot(out.edge_t[e]);
     }
   }
   max_stiffness_ = kmax * (friction_ ? 1.0 + p_.friction.stiffness_ratio : 1.0);

@@ -47,6 +47,7 @@ class SphereWallTerm : public Term {
   SphereWallParams p_;
   Hertz wall_, rim_;
   double z_rim_;              // z of the hole rim circle [m]
+  double free_radius2_;       // below this |x|^2 a node cannot touch the wall [m^2]
   double max_stiffness_ = 0;  // largest contact stiffness at the last accumulate [N/m]
   int contacts_ = 0;
   std::unique_ptr<FrictionHistory> friction_;  // null when mu_s = 0 (no history, no torques)

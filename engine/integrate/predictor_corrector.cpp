@@ -27,13 +27,19 @@ double PredictorCorrector::step(RodState& s, const EvaluateFn& eval,
                                 const PositionsChangedFn& moved) {
   const int n = s.num_nodes();
   const int ne = static_cast<int>(s.theta.size());
-  x0_.assign(s.x.begin(), s.x.end());
-  v0_.assign(s.v.begin(), s.v.end());
-  th0_.assign(s.theta.begin(), s.theta.end());
-  om0_.assign(s.omega.begin(), s.omega.end());
   const int nv = static_cast<int>(s.shell_x.size());
-  sx0_.assign(s.shell_x.begin(), s.shell_x.end());
-  sv0_.assign(s.shell_v.begin(), s.shell_v.end());
+  // The start of the step moves into x0_, v0_, ... (a swap, not a copy); the predictor below
+  // writes every entry of s.x, s.v, ... afresh, also after a rejection.
+  const auto take = [](auto& state_vec, auto& start, int size) {
+    start.swap(state_vec);
+    state_vec.resize(size);
+  };
+  take(s.x, x0_, n);
+  take(s.v, v0_, n);
+  take(s.theta, th0_, ne);
+  take(s.omega, om0_, ne);
+  take(s.shell_x, sx0_, nv);
+  take(s.shell_v, sv0_, nv);
   if (s.has_twist()) {
     saved_frames_.ref1 = s.ref1;
     saved_frames_.ref_tangent = s.ref_tangent;
@@ -87,17 +93,19 @@ double PredictorCorrector::step(RodState& s, const EvaluateFn& eval,
       ++rejected_;
       dt_ = std::min(dt * std::max(c_.min_shrink, std::min(factor, 0.9)), dt_stable_);
       if (!(dt_ > c_.dt_floor)) {
+        // Leave the state at the start of the step.
+        s.x = x0_;
+        s.v = v0_;
+        s.theta = th0_;
+        s.omega = om0_;
+        s.shell_x = sx0_;
+        s.shell_v = sv0_;
         throw SimulationError(finite ? "time step collapsed below " + std::to_string(c_.dt_floor) +
                                            " s"
                                      : "non-finite forces (NaN/Inf)");
       }
-      // Restore and retry.
-      std::copy(x0_.begin(), x0_.end(), s.x.begin());
-      std::copy(v0_.begin(), v0_.end(), s.v.begin());
-      std::copy(th0_.begin(), th0_.end(), s.theta.begin());
-      std::copy(om0_.begin(), om0_.end(), s.omega.begin());
-      std::copy(sx0_.begin(), sx0_.end(), s.shell_x.begin());
-      std::copy(sv0_.begin(), sv0_.end(), s.shell_v.begin());
+      // Retry from the start: the predictor rewrites the positions and velocities, the
+      // reference frames (updated in place) are restored.
       if (s.has_twist()) {
         s.ref1 = saved_frames_.ref1;
         s.ref_tangent = saved_frames_.ref_tangent;
