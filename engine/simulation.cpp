@@ -48,7 +48,7 @@ struct Simulation::Impl {
   double evaluate(RodState& s, Vec3List& a, std::vector<double>& alpha, Vec3List& shell_a) {
     forces.reset(s);
     // Reference frames follow the new positions (twist only), from the tangents reset() found.
-    update_reference_frames(s, forces.edge_t);
+    update_reference_frames(s, forces);
     for (auto& t : assembly.terms) t->begin_trial(integrator.trial_dt());
     double omega2 = 0.0;
     for (size_t k = 0; k < assembly.terms.size(); ++k) {

@@ -4,34 +4,16 @@
 
 namespace wirepack {
 
-Vec3 parallel_transport(const Vec3& u, const Vec3& t0, const Vec3& t1) {
-  const Vec3 b = t0.cross(t1);
-  const double c = t0.dot(t1);
-  if (b.squaredNorm() < 1e-30) {
-    if (c > 0) return u;
-    // Antiparallel: any half-turn about an axis normal to t0 works; pick one normal to u too.
-    Vec3 axis = t0.cross(u);
-    if (axis.squaredNorm() < 1e-30) axis = t0.unitOrthogonal();
-    axis.normalize();
-    return 2.0 * axis.dot(u) * axis - u;
-  }
-  // Rodrigues with unnormalised axis b = sin(phi) k: R u = c u + b x u + (b.u) b / (1 + c).
-  return c * u + b.cross(u) + (b.dot(u) / (1.0 + c)) * b;
-}
-
-double signed_angle(const Vec3& a, const Vec3& b, const Vec3& n) {
-  return std::atan2(a.cross(b).dot(n), a.dot(b));
-}
-
 void update_reference_frames(RodState& s) {
   if (!s.has_twist()) return;
   RodForces scratch;
   scratch.reset(s);
-  update_reference_frames(s, scratch.edge_t);
+  update_reference_frames(s, scratch);
 }
 
-void update_reference_frames(RodState& s, const Vec3List& edge_t) {
+void update_reference_frames(RodState& s, RodForces& work) {
   if (!s.has_twist()) return;
+  const Vec3List& edge_t = work.edge_t;
   const int ne = s.num_edges();
   for (int j = 0; j < ne; ++j) {
     const Vec3& t = edge_t[j];
@@ -40,14 +22,24 @@ void update_reference_frames(RodState& s, const Vec3List& edge_t) {
     s.ref1[j] = d.normalized();
     s.ref_tangent[j] = t;
   }
+  // Reference twist in two passes: the atan2 arguments of every node (independent short
+  // iterations), then the angles; the same arithmetic as one loop, but the processor overlaps
+  // the iterations instead of waiting on one atan2 at a time.
+  std::vector<double>& yx = work.scratch;
+  yx.resize(2 * static_cast<size_t>(std::max(ne, 1)));
   for (int i = 1; i < ne; ++i) {
     const Vec3& t0 = s.ref_tangent[i - 1];
     const Vec3& t1 = s.ref_tangent[i];
     const Vec3 p = parallel_transport(s.ref1[i - 1], t0, t1);
-    const double angle = signed_angle(p, s.ref1[i], t1);
+    yx[2 * i] = p.cross(s.ref1[i]).dot(t1);
+    yx[2 * i + 1] = p.dot(s.ref1[i]);
+  }
+  for (int i = 1; i < ne; ++i) {
+    const double angle = std::atan2(yx[2 * i], yx[2 * i + 1]);  // signed_angle(p, ref1_i, t_i)
     // Unwrap: the new value is the old one plus the wrapped change.
     double delta = angle - s.ref_twist[i];
-    delta -= 2.0 * M_PI * std::round(delta / (2.0 * M_PI));
+    // round() is 0 for |delta| < pi (nearly always: delta is the change over one step).
+    if (!(std::abs(delta) < 3.0)) delta -= 2.0 * M_PI * std::round(delta / (2.0 * M_PI));
     s.ref_twist[i] += delta;
   }
 }

@@ -44,6 +44,7 @@ struct RodForces {
   std::vector<double> edge_len;  // |x_{j+1} - x_j| (n-1) [m]
   Vec3List edge_t;               // unit tangent (x_{j+1} - x_j) / edge_len (n-1)
   double min_rest_length = 0;    // smallest rest length (inf for a single node) [m]
+  std::vector<double> scratch;   // work space (update_reference_frames), no meaning outside
 
   // Zeroes the forces and computes the geometry of s; every accumulate() needs it for the same s.
   void reset(const RodState& s);
