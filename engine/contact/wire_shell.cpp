@@ -37,9 +37,15 @@ void WireShellTerm::maybe_rebuild(const RodState& s) {
   const double limit2 = 0.25 * p_.skin * p_.skin;
   if (!need) {
     const int nn = std::min(ne + 1, s.num_nodes());
-    for (int i = 0; i < nn && !need; ++i) need = (s.x[i] - x_at_build_[i]).squaredNorm() > limit2;
+    moved2_.resize(nn);
+    shell_moved2_.resize(s.shell_x.size());
+    for (int i = 0; i < nn && !need; ++i) {
+      moved2_[i] = (s.x[i] - x_at_build_[i]).squaredNorm();
+      need = moved2_[i] > limit2;
+    }
     for (size_t k = 0; k < s.shell_x.size() && !need; ++k) {
-      need = (s.shell_x[k] - shell_at_build_[k]).squaredNorm() > limit2;
+      shell_moved2_[k] = (s.shell_x[k] - shell_at_build_[k]).squaredNorm();
+      need = shell_moved2_[k] > limit2;
     }
   }
   if (need) rebuild(s);
@@ -52,9 +58,14 @@ void WireShellTerm::rebuild(const RodState& s) {
   edges_at_build_ = ne;
   x_at_build_.assign(s.x.begin(), s.x.begin() + std::min(ne + 1, s.num_nodes()));
   shell_at_build_ = s.shell_x;
+  moved2_.assign(x_at_build_.size(), 0.0);
+  shell_moved2_.assign(shell_at_build_.size(), 0.0);
   candidates_.clear();
   seg_edge_.clear();
   seg_vert_.clear();
+  cand_slack2_4_.clear();
+  edge_slack2_4_.clear();
+  vert_slack2_4_.clear();
   if (ne < 1 || nf == 0) return;
   points_.resize(ne + nf);
   double lmax = 0.0;
@@ -94,6 +105,29 @@ void WireShellTerm::rebuild(const RodState& s) {
   for (auto* list : {&seg_edge_, &seg_vert_}) {
     std::sort(list->begin(), list->end());
     list->erase(std::unique(list->begin(), list->end()), list->end());
+  }
+  // Slack of every pair (see the header), from the distances at the build.
+  const double Dc = p_.r + p_.half_thickness;
+  const auto quarter_slack2 = [&](double dist2) {
+    const double slack = std::max(std::sqrt(dist2) - Dc - 1e-9 * p_.r, 0.0);
+    return 0.25 * slack * slack;
+  };
+  for (const auto& [e, f] : candidates_) {
+    const auto& v = mesh_.faces[f];
+    cand_slack2_4_.push_back(
+        quarter_slack2(segment_triangle_closest(s.x[e], s.x[e + 1], s.shell_x[v[0]],
+                                                s.shell_x[v[1]], s.shell_x[v[2]])
+                           .dist2));
+  }
+  for (const auto& [e, k] : seg_edge_) {
+    edge_slack2_4_.push_back(
+        quarter_slack2(segment_segment_closest(s.x[e], s.x[e + 1], s.shell_x[mesh_.edges[k][0]],
+                                               s.shell_x[mesh_.edges[k][1]])
+                           .dist2));
+  }
+  for (const auto& [e, vtx] : seg_vert_) {
+    vert_slack2_4_.push_back(quarter_slack2(
+        segment_segment_closest(s.x[e], s.x[e + 1], s.shell_x[vtx], s.shell_x[vtx]).dist2));
   }
 }
 
@@ -150,8 +184,14 @@ double WireShellTerm::evaluate(const RodState& s, RodForces* out) {
   };
 
   // (wire edge, face): the primary contacts.
-  for (const auto& [e, f] : candidates_) {
+  const auto wire_moved2 = [&](int e) { return std::max(moved2_[e], moved2_[e + 1]); };
+  for (size_t q = 0; q < candidates_.size(); ++q) {
+    const auto [e, f] = candidates_[q];
     const auto& v = mesh_.faces[f];
+    const double moved2 =
+        std::max(wire_moved2(e),
+                 std::max(shell_moved2_[v[0]], std::max(shell_moved2_[v[1]], shell_moved2_[v[2]])));
+    if (moved2 < cand_slack2_4_[q]) continue;  // cannot touch yet
     const Vec3 &a = s.shell_x[v[0]], &b = s.shell_x[v[1]], &c = s.shell_x[v[2]];
     const TriangleClosest tc = segment_triangle_closest(s.x[e], s.x[e + 1], a, b, c);
     if (tc.dist2 >= Dc * Dc) continue;
@@ -180,9 +220,14 @@ double WireShellTerm::evaluate(const RodState& s, RodForces* out) {
     }
     for (int i = 0; i < n_own; ++i) face_pairs_[owners[i]].force += signed_force / n_own;
   };
-  const Vec3 no_n = Vec3::UnitZ();        // only for exactly coincident points (measure zero)
-  for (const auto& [e, k] : seg_edge_) {  // - (wire edge, shell edge)
+  const Vec3 no_n = Vec3::UnitZ();  // only for exactly coincident points (measure zero)
+  for (size_t q = 0; q < seg_edge_.size(); ++q) {  // - (wire edge, shell edge)
+    const auto [e, k] = seg_edge_[q];
     const int v0 = mesh_.edges[k][0], v1 = mesh_.edges[k][1];
+    if (std::max(wire_moved2(e), std::max(shell_moved2_[v0], shell_moved2_[v1])) <
+        edge_slack2_4_[q]) {
+      continue;
+    }
     const SegmentClosest c =
         segment_segment_closest(s.x[e], s.x[e + 1], s.shell_x[v0], s.shell_x[v1]);
     const int wi[2] = {e, e + 1}, si[2] = {v0, v1};
@@ -194,7 +239,9 @@ double WireShellTerm::evaluate(const RodState& s, RodForces* out) {
     const int faces[2] = {ef[0], ef[1]};
     share(f, &e, 1, faces, ef[1] >= 0 ? 2 : 1);
   }
-  for (const auto& [e, vtx] : seg_vert_) {  // + (wire edge, shell vertex)
+  for (size_t q = 0; q < seg_vert_.size(); ++q) {  // + (wire edge, shell vertex)
+    const auto [e, vtx] = seg_vert_[q];
+    if (std::max(wire_moved2(e), shell_moved2_[vtx]) < vert_slack2_4_[q]) continue;
     const Vec3& Q = s.shell_x[vtx];
     const Vec3 d = s.x[e + 1] - s.x[e];
     const double dd = d.squaredNorm();

@@ -85,6 +85,11 @@ class WireShellTerm : public Term {
   std::vector<std::pair<int, int>> candidates_;  // (wire edge, face), sorted
   std::vector<std::pair<int, int>> seg_edge_;    // (wire edge, shell edge) of the candidates
   std::vector<std::pair<int, int>> seg_vert_;    // (wire edge, interior vertex) of them
+  // A quarter of each pair's squared slack at the build (distance - (r + t/2), less 1e-9 r):
+  // while every point of the pair moved less than its square root, the pair cannot touch
+  // (its distance shrinks by at most the wire's plus the shell's move), so it is skipped.
+  std::vector<double> cand_slack2_4_, edge_slack2_4_, vert_slack2_4_;  // [m^2]
+  std::vector<double> moved2_, shell_moved2_;  // |x - x_at_build|^2 per node / vertex [m^2]
   Vec3List x_at_build_, shell_at_build_;
   int edges_at_build_ = -1;
   long rebuilds_ = 0;

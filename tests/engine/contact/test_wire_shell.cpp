@@ -128,5 +128,51 @@ TEST(WireShell, GradientMatchesFiniteDifferencesAndBalances) {
   EXPECT_LT(errs[1], 0.1 * errs[0] + 1e-9);
 }
 
+// Verlet list: the term keeps its pair lists while every point moved less than skin / 2 and
+// skips a pair while its points moved less than half its slack at the build (wire_shell.hpp). Moves
+// of every size below skin / 2, of the wire and of the shell: energy and forces must be bitwise
+// those of a fresh term (which evaluates every pair), and some moves must change the contacts.
+TEST(WireShell, VerletSkipGivesTheFreshTermsForces) {
+  ShellMesh mesh = flat_square(12 * kR, 6);
+  std::mt19937_64 rng(11);
+  std::normal_distribution<double> g(0.0, 1.0);
+  for (auto& p : mesh.rest) p[2] += 0.1 * kR * g(rng);
+  Vec3List pts;
+  for (int i = 0; i < 10; ++i) {
+    // Heights from touching (overlap 0.1 r) to clear of contact by 0.4 r.
+    pts.push_back(Vec3(-4.5 * kR + i * kR, 0.4 * kR * g(rng), kR + kH + 0.15 * kR * g(rng)));
+  }
+  RodState s0 = wire_over(mesh, pts.front(), pts.back(), 10);
+  s0.x = pts;
+  const double skin = params().skin;
+  WireShellTerm term(mesh, params());
+  RodForces f;
+  f.reset(s0);
+  term.accumulate(s0, f);
+  const int contacts0 = term.contacts();
+  int changed = 0;
+  for (double move : {0.02, 0.1, 0.2, 0.3, 0.45, 0.49}) {
+    RodState s = s0;
+    for (auto& p : s.x) p += move * skin * Vec3(g(rng), g(rng), g(rng)).normalized();
+    for (auto& p : s.shell_x) p += move * skin * Vec3(g(rng), g(rng), g(rng)).normalized();
+    f.reset(s);
+    const double U = term.accumulate(s, f);
+    EXPECT_EQ(term.energy(s), U) << move;
+    WireShellTerm fresh(mesh, params());
+    RodForces ff;
+    ff.reset(s);
+    const double U_fresh = fresh.accumulate(s, ff);
+    EXPECT_EQ(U, U_fresh) << move;
+    EXPECT_EQ(term.contacts(), fresh.contacts()) << move;
+    for (size_t i = 0; i < f.f.size(); ++i) EXPECT_EQ(f.f[i], ff.f[i]) << move << " node " << i;
+    for (size_t k = 0; k < f.shell_f.size(); ++k) {
+      EXPECT_EQ(f.shell_f[k], ff.shell_f[k]) << move << " vertex " << k;
+    }
+    changed += term.contacts() != contacts0;
+  }
+  EXPECT_EQ(term.rebuilds(), 1) << "moves below skin / 2 keep the list";
+  EXPECT_GT(changed, 0) << "the moves should change the contacts";
+}
+
 }  // namespace
 }  // namespace wirepack
