@@ -1,6 +1,6 @@
 // Engine I micro-benchmarks (Google Benchmark): nanoseconds per wire node-step for
 // (a) the elastic forces alone and (b) a whole adaptive step with wall and self-contact at a
-// packed state (rho = 20, l ~ 10). Peak resident memory is reported beside the time.
+// packed state (rho = 20, l ~ 10 and 18). Peak resident memory is reported beside the time.
 #include <benchmark/benchmark.h>
 
 #include <random>
@@ -68,7 +68,8 @@ void BM_ElasticForces(benchmark::State& state) {
 BENCHMARK(BM_ElasticForces)->Arg(0)->Arg(1)->ArgName("twist")->Unit(benchmark::kMicrosecond);
 
 // (b) Whole steps (predictor, all terms, damping, corrector, feeder) at a packed state;
-// argument: mu_s x 10 (friction and twist are on for mu_s > 0).
+// arguments: mu_s x 10 (friction and twist are on for mu_s > 0) and the injected length l of
+// the state (at l = 10 the strands are apart, N = 0; at l = 18 the coil's windings touch).
 void BM_PackedStep(benchmark::State& state) {
   SceneParams p;
   p.shell = ShellKind::Rigid;
@@ -77,7 +78,7 @@ void BM_PackedStep(benchmark::State& state) {
   p.mu_d = 0.9 * p.mu_s;
   p.l_max = 1e9;
   Simulation sim(p);
-  sim.advance_to(10.0);
+  sim.advance_to(static_cast<double>(state.range(1)));
   double node_steps = 0;
   for (auto _ : state) {
     sim.step();
@@ -91,9 +92,11 @@ void BM_PackedStep(benchmark::State& state) {
   state.counters["peak_MiB"] = peak_rss_mib();
 }
 BENCHMARK(BM_PackedStep)
-    ->Arg(0)
-    ->Arg(10)
-    ->ArgName("mu_s_x10")
+    ->Args({0, 10})
+    ->Args({10, 10})
+    ->Args({0, 18})
+    ->Args({10, 18})
+    ->ArgNames({"mu_s_x10", "l"})
     ->Iterations(20000)
     ->Unit(benchmark::kMicrosecond);
 
