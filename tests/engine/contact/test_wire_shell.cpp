@@ -43,6 +43,29 @@ RodState wire_over(const ShellMesh& mesh, const Vec3& a, const Vec3& b, int n) {
   return s;
 }
 
+// A flat square of side 12 r (6 x 6 squares) with vertex heights jittered by 0.1 r.
+ShellMesh bumpy_square(std::mt19937_64& rng) {
+  ShellMesh mesh = flat_square(12 * kR, 6);
+  std::normal_distribution<double> g(0.0, 1.0);
+  for (auto& p : mesh.rest) p[2] += 0.1 * kR * g(rng);
+  return mesh;
+}
+
+// n wire nodes one r apart along x, centred on x = 0, y jittered by 0.4 r, at heights
+// z0 + dz g (g standard normal), over the mesh at rest.
+RodState wire_across(const ShellMesh& mesh, int n, double z0, double dz, std::mt19937_64& rng) {
+  std::normal_distribution<double> g(0.0, 1.0);
+  Vec3List pts;
+  for (int i = 0; i < n; ++i) {
+    const double y = 0.4 * kR * g(rng);
+    const double z = z0 + dz * g(rng);
+    pts.push_back(Vec3((i - 0.5 * (n - 1)) * kR, y, z));
+  }
+  RodState s = wire_over(mesh, pts.front(), pts.back(), n);
+  s.x = pts;
+  return s;
+}
+
 // A straight wire edge lying parallel to a flat shell at overlap delta is one Hertz contact,
 // wherever it lies: over a face, along or across mesh edges, over vertices (1e-9 relative).
 TEST(WireShell, OneContactPerEdgeAnywhereOnAFlatMesh) {
@@ -82,16 +105,9 @@ TEST(WireShell, BoundaryEdgeOfTheMeshIsAContact) {
 // perturbed mesh with a crumpled wire pressed into it (error O(h^2) until round-off), and the
 // total force is zero (action = reaction).
 TEST(WireShell, GradientMatchesFiniteDifferencesAndBalances) {
-  ShellMesh mesh = flat_square(12 * kR, 6);
   std::mt19937_64 rng(7);
-  std::normal_distribution<double> g(0.0, 1.0);
-  for (auto& p : mesh.rest) p[2] += 0.1 * kR * g(rng);
-  Vec3List pts;
-  for (int i = 0; i < 8; ++i) {
-    pts.push_back(Vec3(-3.5 * kR + i * kR, 0.4 * kR * g(rng), kR + kH - 0.05 * kR * (1 + g(rng))));
-  }
-  RodState s = wire_over(mesh, pts.front(), pts.back(), 8);
-  s.x = pts;
+  const ShellMesh mesh = bumpy_square(rng);
+  RodState s = wire_across(mesh, 8, kR + kH - 0.05 * kR, -0.05 * kR, rng);
   WireShellTerm term(mesh, params());
   RodForces f;
   f.reset(s);
@@ -133,17 +149,11 @@ TEST(WireShell, GradientMatchesFiniteDifferencesAndBalances) {
 // of every size below skin / 2, of the wire and of the shell: energy and forces must be bitwise
 // those of a fresh term (which evaluates every pair), and some moves must change the contacts.
 TEST(WireShell, VerletSkipGivesTheFreshTermsForces) {
-  ShellMesh mesh = flat_square(12 * kR, 6);
   std::mt19937_64 rng(11);
   std::normal_distribution<double> g(0.0, 1.0);
-  for (auto& p : mesh.rest) p[2] += 0.1 * kR * g(rng);
-  Vec3List pts;
-  for (int i = 0; i < 10; ++i) {
-    // Heights from touching (overlap 0.1 r) to clear of contact by 0.4 r.
-    pts.push_back(Vec3(-4.5 * kR + i * kR, 0.4 * kR * g(rng), kR + kH + 0.15 * kR * g(rng)));
-  }
-  RodState s0 = wire_over(mesh, pts.front(), pts.back(), 10);
-  s0.x = pts;
+  const ShellMesh mesh = bumpy_square(rng);
+  // Heights from touching (overlap ~0.3 r) to clear of contact by ~0.3 r.
+  const RodState s0 = wire_across(mesh, 10, kR + kH, 0.15 * kR, rng);
   const double skin = params().skin;
   WireShellTerm term(mesh, params());
   RodForces f;
