@@ -22,7 +22,7 @@ struct NumericsParams {
   double element_length = 0.5e-3;   // rest length of a wire element [m]
   double shell_mesh_size = 1.0e-3;  // target shell triangle edge [m] (elastic shell only)
   double quasistatic_ratio = 0.01;  // v / c_axial; sets the mass scaling [-]
-  double tolerance = 1e-4;          // local position error per step, in units of r [-]
+  double tolerance = 1e-3;          // local position error per step, in units of r [-]
   double damping_ratio = 0.05;      // subcritical damping ratio zeta [-]
   EffectMode twist = EffectMode::Auto;
   EffectMode shell_self_contact = EffectMode::Auto;  // needs an elastic shell

@@ -145,7 +145,7 @@ const std::vector<KeySpec>& scene_schema() {
       {.pointer = "/numerics/tolerance",
        .type = Type::Number,
        .need = Need::Optional,
-       .default_text = "preset: 1e-4",
+       .default_text = "preset: 1e-3",
        .min = Bound{0, false},
        .max = Bound{1, true},
        .doc = "local position error allowed per step, in units of r [-]",
@@ -205,7 +205,7 @@ const std::vector<NumericsPreset>& numerics_presets() {
   // Chosen from the accuracy-vs-time study (results/accuracy, README "Presets").
   static const std::vector<NumericsPreset> table = {
       {"fast", 2.0, 4.0, 0.01, 1e-3, "quick looks and broad scans"},
-      {"default", 1.0, 2.0, 0.01, 1e-4, "production nights"},
+      {"default", 1.0, 2.0, 0.01, 1e-3, "production nights"},
       {"accurate", 0.5, 1.0, 0.003, 3e-5, "convergence checks and references"},
   };
   return table;

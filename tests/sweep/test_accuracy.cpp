@@ -72,7 +72,7 @@ TEST(Accuracy, SmallStudyWritesLaddersAndFloor) {
   o.window = {0.5, 50};
   o.gnuplot.clear();
   const AccuracyResult r = accuracy_study(o);
-  // 5 runs (the centre el = 5e-4, tol = 1e-4, seed 1 is in both sweeps and read once).
+  // 5 runs (the centre el = 5e-4, tol = 1e-3, seed 1 is in both sweeps and read once).
   EXPECT_EQ(r.runs, 5u);
   EXPECT_EQ(r.ladders, 3u);  // element_length (seeds 1, 2), tolerance (seed 1)
   EXPECT_EQ(r.rows, 8u);     // 2 + 2 + 2 ladder rows, 2 floor rows
@@ -109,7 +109,7 @@ TEST(Accuracy, SmallStudyWritesLaddersAndFloor) {
     if (c[col["knob"]] == "seed") {
       ++floors;
       EXPECT_EQ(std::stod(c[col["element_length"]]), 5e-4);  // floors compare the centres
-      EXPECT_EQ(std::stod(c[col["tolerance"]]), 1e-4);
+      EXPECT_EQ(std::stod(c[col["tolerance"]]), 1e-3);
     }
     if (c[col["knob"]] != "seed" && !is_ref) {
       EXPECT_EQ(std::stod(c[col["value"]]), 1e-3);  // the coarser of each ladder
@@ -143,9 +143,9 @@ TEST(Accuracy, PresetsAreComparedWithTheFinestRun) {
     EXPECT_EQ(c[col["knob"]], "combined");
     const bool is_ref = c[col["is_reference"]] == "1";
     refs += is_ref;
-    // The reference is the default preset (element r, tolerance 1e-4); fast has 2 r and 1e-3.
+    // The reference is the default preset (element r); fast has 2 r; both tolerance 1e-3.
     EXPECT_EQ(std::stod(c[col["element_length"]]), is_ref ? 5e-4 : 1e-3);
-    EXPECT_EQ(std::stod(c[col["tolerance"]]), is_ref ? 1e-4 : 1e-3);
+    EXPECT_EQ(std::stod(c[col["tolerance"]]), 1e-3);
     if (!is_ref) {
       EXPECT_GT(std::stod(c[col["err_U_b_hat"]]), 0);
     }
