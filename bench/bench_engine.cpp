@@ -97,7 +97,7 @@ BENCHMARK(BM_PackedStep)
     ->Args({0, 18})
     ->Args({10, 18})
     ->ArgNames({"mu_s_x10", "l"})
-    ->Iterations(20000)
+    ->Iterations(5000)
     ->Unit(benchmark::kMicrosecond);
 
 }  // namespace
