@@ -1,5 +1,5 @@
 // The two morphologies of the paper at its Fig. 3/5b parameters (rho = 20, xi = 10, eps = 1e3,
-// default numerics, seed 1), label "slow" (about 2 min on one core): at mu_s = 0 the wire coils
+// default numerics, seed 1), label "slow" (about 1.5 min on one core): at mu_s = 0 the wire coils
 // (D small), at mu_s = 0.5 it crumples (D large) once it has bifurcated from the coil
 // (l ~ 7.5). Guards the physics that decides the phase, e.g. the damping default: at the former
 // damping ratio 0.5 the mu_s = 0.5 run coiled too (mean D over [9, 12] ~ 0.1).
