@@ -2,7 +2,7 @@
 # Reproduces results/elastic/: the two morphology scenes of the paper's Fig. 1/3 parameters
 # (rho = 20, xi = 10, eps = 1e3) at mu_s = 0 and mu_s = 0.5, to l = 30, default numerics,
 # seed 1; CSV series, D(l) plot and a picture of the last snapshot of each. On the 2-core CI
-# machine (both run in parallel): 3 min for mu_s = 0, 8.5 min for mu_s = 0.5 (crumpling).
+# machine (both run in parallel): 4 min for mu_s = 0, 8 min for mu_s = 0.5 (crumpling).
 # Run from the repository root after scripts/setup.sh. Run files go to runs/ (not committed).
 set -euo pipefail
 out=results/elastic
