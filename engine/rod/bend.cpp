@@ -21,7 +21,7 @@ double BendTerm::accumulate(const RodState& s, RodForces& out) {
   for (int i = 1; i + 1 < n; ++i) {
     const Vec3& t0 = t[i - 1];
     const Vec3& t1 = t[i];
-    const double c = t0.dot(t1);
+    const double c = out.node_cos[i];  // t0 . t1
     const double opc = std::max(1.0 + c, kMinOnePlusCos);
     const double lbar = 0.5 * (s.rest_length[i - 1] + s.rest_length[i]);
     const double k = 2.0 * EI_ / lbar;  // U_i = k (1 - c) / (1 + c)

@@ -30,7 +30,7 @@ void update_reference_frames(RodState& s, RodForces& work) {
   for (int i = 1; i < ne; ++i) {
     const Vec3& t0 = s.ref_tangent[i - 1];
     const Vec3& t1 = s.ref_tangent[i];
-    const Vec3 p = parallel_transport(s.ref1[i - 1], t0, t1);
+    const Vec3 p = parallel_transport(s.ref1[i - 1], t0, work.node_cross[i], work.node_cos[i]);
     yx[2 * i] = p.cross(s.ref1[i]).dot(t1);
     yx[2 * i + 1] = p.dot(s.ref1[i]);
   }

@@ -11,9 +11,13 @@ namespace wirepack {
 
 // Parallel transport of u from unit tangent t0 to unit tangent t1 (rotation about t0 x t1).
 // Inline: called twice per edge and step.
+inline Vec3 parallel_transport(const Vec3& u, const Vec3& t0, const Vec3& b, double c);
 inline Vec3 parallel_transport(const Vec3& u, const Vec3& t0, const Vec3& t1) {
-  const Vec3 b = t0.cross(t1);
-  const double c = t0.dot(t1);
+  return parallel_transport(u, t0, t0.cross(t1), t0.dot(t1));
+}
+
+// The same with b = t0 x t1 and c = t0 . t1 given (RodForces::node_cross, node_cos).
+inline Vec3 parallel_transport(const Vec3& u, const Vec3& t0, const Vec3& b, double c) {
   if (b.squaredNorm() < 1e-30) {
     if (c > 0) return u;
     // Antiparallel: any half-turn about an axis normal to t0 works; pick one normal to u too.

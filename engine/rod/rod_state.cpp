@@ -21,6 +21,16 @@ void RodForces::reset(const RodState& s) {
     min_rest = std::min(min_rest, s.rest_length[j]);
   }
   min_rest_length = min_rest;
+  // Turning of the tangent at each interior node: bend, twist and the reference frames use it.
+  const int n = s.num_nodes();
+  node_cos.assign(std::max(n, 0), 0.0);
+  for (int i = 1; i + 1 < n; ++i) node_cos[i] = edge_t[i - 1].dot(edge_t[i]);
+  if (s.has_twist()) {
+    node_cross.assign(std::max(n, 0), Vec3::Zero());
+    for (int i = 1; i + 1 < n; ++i) node_cross[i] = edge_t[i - 1].cross(edge_t[i]);
+  } else {
+    node_cross.clear();
+  }
 }
 
 }  // namespace wirepack

@@ -43,6 +43,8 @@ struct RodForces {
   Vec3List shell_f;
   std::vector<double> edge_len;  // |x_{j+1} - x_j| (n-1) [m]
   Vec3List edge_t;               // unit tangent (x_{j+1} - x_j) / edge_len (n-1)
+  std::vector<double> node_cos;  // t_{i-1} . t_i at interior node i (n; 0 at the ends)
+  Vec3List node_cross;           // t_{i-1} x t_i (n; zero at the ends; only with twist DOFs)
   double min_rest_length = 0;    // smallest rest length (inf for a single node) [m]
   std::vector<double> scratch;   // work space (update_reference_frames), no meaning outside
 

@@ -20,9 +20,7 @@ double TwistTerm::accumulate(const RodState& s, RodForces& out) {
     out.torque[i - 1] += dU_dm;
     const double len0 = out.edge_len[i - 1];
     const double len1 = out.edge_len[i];
-    const Vec3& t0 = out.edge_t[i - 1];
-    const Vec3& t1 = out.edge_t[i];
-    const Vec3 kb = (2.0 / std::max(1.0 + t0.dot(t1), 1e-9)) * t0.cross(t1);
+    const Vec3 kb = (2.0 / std::max(1.0 + out.node_cos[i], 1e-9)) * out.node_cross[i];
     const Vec3 g0 = (dU_dm / (2.0 * len0)) * kb;  // dU/de^{i-1}
     const Vec3 g1 = (dU_dm / (2.0 * len1)) * kb;  // dU/de^i
     out.f[i - 1] += g0;
