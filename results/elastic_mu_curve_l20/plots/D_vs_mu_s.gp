@@ -1,0 +1,29 @@
+# D against mu_s (paper Fig. 5); data: ../D_vs_mu_s.csv
+# Render: gnuplot D_vs_mu_s.gp
+if (!exists("out")) out = "D_vs_mu_s.png"
+if (strstrt(GPVAL_TERMINALS, "pngcairo") > 0) {
+  set terminal pngcairo noenhanced size 800,600
+} else {
+  set terminal png noenhanced size 800,600
+}
+set output out
+set grid
+set key top left
+$d0_0 << EOD
+0 0.30041536774453104 0.02277249969019568
+0.1 0.2877003699956358 0.029807525371804807
+0.2 0.4101414433009542 0.003012076536476893
+0.3 0.6269434617703762 0.0014904648539475485
+0.5 0.9109111437810596 0.06649941661110104
+1 0.676945960147477 0.0033706454867958864
+EOD
+reset
+set grid
+set key top left
+set title "D = max of D(l) over l in [5, 20]: mean and SEM over seeds"
+set xlabel "mu_s"
+set ylabel "D"
+set yrange [0:*]
+set offsets graph 0.03, graph 0.03, graph 0.05, 0
+plot $d0_0 using 1:2:3 with yerrorlines pointtype 7 pointsize 0.8 notitle
+set output
