@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "engine/contact/segment_distance.hpp"
+#include "engine/contact/verlet_slack.hpp"
 
 namespace wirepack {
 
@@ -51,9 +52,7 @@ void SelfContactTerm::rebuild(const RodState& s) {
     if (b - a <= exclude_) continue;
     const SegmentClosest c = segment_segment_closest(s.x[a], s.x[a + 1], s.x[b], s.x[b + 1]);
     if (c.dist2 >= reach * reach) continue;
-    // Slack less a margin far above the rounding of the distances (1e-9 r).
-    const double slack = std::max(std::sqrt(c.dist2) - 2.0 * p_.r - 1e-9 * p_.r, 0.0);
-    candidates_.push_back(Candidate{a, b, 0.25 * slack * slack});
+    candidates_.push_back(Candidate{a, b, quarter_slack2(c.dist2, 2.0 * p_.r, p_.r)});
   }
 }
 

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include "engine/contact/segment_distance.hpp"
 #include "engine/contact/triangle_distance.hpp"
+#include "engine/contact/verlet_slack.hpp"
 
 namespace wirepack {
 
@@ -80,17 +82,25 @@ void WireShellTerm::rebuild(const RodState& s) {
     points_[ne + f] = c;
     for (int k = 0; k < 3; ++k) face_reach_ = std::max(face_reach_, (s.shell_x[v[k]] - c).norm());
   }
-  const double reach = p_.r + p_.half_thickness + p_.skin;
+  const double Dc = p_.r + p_.half_thickness;
+  const double reach = Dc + p_.skin;
   grid_.find_pairs_between(points_, ne, 0.5 * lmax + face_reach_ + reach, broad_);
+  // (wire edge, face) pairs within reach with their slack (verlet_slack.hpp), sorted by pair.
+  found_.clear();
   for (const auto& [i, j] : broad_) {
     if (i >= ne || j < ne) continue;  // only (wire edge, face) pairs
     const int e = i, f = j - ne;
     const auto& v = mesh_.faces[f];
     const TriangleClosest c = segment_triangle_closest(s.x[e], s.x[e + 1], s.shell_x[v[0]],
                                                        s.shell_x[v[1]], s.shell_x[v[2]]);
-    if (c.dist2 < reach * reach) candidates_.emplace_back(e, f);
+    if (c.dist2 < reach * reach) found_.push_back({e, f, quarter_slack2(c.dist2, Dc, p_.r)});
   }
-  std::sort(candidates_.begin(), candidates_.end());
+  std::sort(found_.begin(), found_.end(),
+            [](const auto& a, const auto& b) { return std::tie(a.e, a.f) < std::tie(b.e, b.f); });
+  for (const auto& c : found_) {
+    candidates_.emplace_back(c.e, c.f);
+    cand_slack2_4_.push_back(c.slack2_4);
+  }
   // Unique (wire edge, shell edge) and (wire edge, shell vertex) pairs of the candidates, for
   // the inclusion-exclusion corrections: an edge is the overlap of its two faces, an interior
   // vertex the overlap of its closed fan; the rim's pieces overlap nothing. Built here, not per
@@ -106,28 +116,16 @@ void WireShellTerm::rebuild(const RodState& s) {
     std::sort(list->begin(), list->end());
     list->erase(std::unique(list->begin(), list->end()), list->end());
   }
-  // Slack of every pair (see the header), from the distances at the build.
-  const double Dc = p_.r + p_.half_thickness;
-  const auto quarter_slack2 = [&](double dist2) {
-    const double slack = std::max(std::sqrt(dist2) - Dc - 1e-9 * p_.r, 0.0);
-    return 0.25 * slack * slack;
-  };
-  for (const auto& [e, f] : candidates_) {
-    const auto& v = mesh_.faces[f];
-    cand_slack2_4_.push_back(
-        quarter_slack2(segment_triangle_closest(s.x[e], s.x[e + 1], s.shell_x[v[0]],
-                                                s.shell_x[v[1]], s.shell_x[v[2]])
-                           .dist2));
-  }
+  // Slack of the correction pairs, from their distances at the build.
   for (const auto& [e, k] : seg_edge_) {
-    edge_slack2_4_.push_back(
-        quarter_slack2(segment_segment_closest(s.x[e], s.x[e + 1], s.shell_x[mesh_.edges[k][0]],
-                                               s.shell_x[mesh_.edges[k][1]])
-                           .dist2));
+    const SegmentClosest c = segment_segment_closest(
+        s.x[e], s.x[e + 1], s.shell_x[mesh_.edges[k][0]], s.shell_x[mesh_.edges[k][1]]);
+    edge_slack2_4_.push_back(quarter_slack2(c.dist2, Dc, p_.r));
   }
   for (const auto& [e, vtx] : seg_vert_) {
-    vert_slack2_4_.push_back(quarter_slack2(
-        segment_segment_closest(s.x[e], s.x[e + 1], s.shell_x[vtx], s.shell_x[vtx]).dist2));
+    const SegmentClosest c =
+        segment_segment_closest(s.x[e], s.x[e + 1], s.shell_x[vtx], s.shell_x[vtx]);
+    vert_slack2_4_.push_back(quarter_slack2(c.dist2, Dc, p_.r));
   }
 }
 

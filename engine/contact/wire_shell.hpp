@@ -89,6 +89,11 @@ class WireShellTerm : public Term {
   // while every point of the pair moved less than its square root, the pair cannot touch
   // (its distance shrinks by at most the wire's plus the shell's move), so it is skipped.
   std::vector<double> cand_slack2_4_, edge_slack2_4_, vert_slack2_4_;  // [m^2]
+  struct FoundPair {
+    int e, f;
+    double slack2_4;
+  };
+  std::vector<FoundPair> found_;               // scratch of rebuild()
   std::vector<double> moved2_, shell_moved2_;  // |x - x_at_build|^2 per node / vertex [m^2]
   Vec3List x_at_build_, shell_at_build_;
   int edges_at_build_ = -1;
