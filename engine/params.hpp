@@ -10,6 +10,9 @@ enum class ShellKind { Rigid, Elastic };
 // has it (twist: iff friction is on, mu_s > 0, since only friction applies torques about the
 // centerline; shell self-contact: iff the shell is elastic, since a rigid sphere cannot fold).
 enum class EffectMode { Auto, On, Off };
+// Mass model of the wire (integrate/wire_mass.hpp): every mode at the scaled density (uniform),
+// or only the element-scale modes, the slow ones at the physical density (selective).
+enum class MassScaling { Uniform, Selective };
 
 struct WireParams {
   double radius = 0.5e-3;            // r [m]
@@ -21,9 +24,10 @@ struct WireParams {
 struct NumericsParams {
   double element_length = 0.5e-3;   // rest length of a wire element [m]
   double shell_mesh_size = 1.0e-3;  // target shell triangle edge [m] (elastic shell only)
-  double quasistatic_ratio = 0.01;  // v / c_axial; sets the mass scaling [-]
-  double tolerance = 1e-3;          // local position error per step, in units of r [-]
-  double damping_ratio = 0.05;      // subcritical damping ratio zeta [-]
+  double quasistatic_ratio = 0.02;  // v / c_axial of the element-scale modes; mass scaling [-]
+  MassScaling mass_scaling = MassScaling::Selective;
+  double tolerance = 1e-3;      // local position error per step, in units of r [-]
+  double damping_ratio = 0.05;  // subcritical damping ratio zeta [-]
   EffectMode twist = EffectMode::Auto;
   EffectMode shell_self_contact = EffectMode::Auto;  // needs an elastic shell
 };

@@ -1,5 +1,6 @@
 #include "engine/scene.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -25,17 +26,36 @@ Assembly assemble(const SceneParams& p) {
   a.material = RodMaterial::from(w);
   const RodMaterial& m = a.material;
 
-  // Mass scaling: quasistatic_ratio q = v / c_axial with c_axial = sqrt(E / rho_eff).
+  // Mass scaling: quasistatic_ratio q = v / c_axial with c_axial = sqrt(E / rho_eff), for every
+  // mode (uniform) or for the element-scale modes only (selective; see integrate/wire_mass.hpp).
   const double q = p.numerics.quasistatic_ratio;
   a.density_scaled = m.E * q * q / (v * v);
-  a.inertia.node_mass = a.density_scaled * m.A * ell;
-  a.inertia.edge_twist_inertia = a.density_scaled * m.J * ell;
+  const bool selective = p.numerics.mass_scaling == MassScaling::Selective;
+  const double m_scaled = a.density_scaled * m.A * ell;
+  // Density of the slow modes [kg/m^3]: physical (selective), else the scaled one.
+  const double rho_slow = selective ? w.density : a.density_scaled;
+  const double m_slow = rho_slow * m.A * ell;
+  a.mass = WireMass(m_slow, selective ? std::max(0.0, 0.25 * (m_scaled - m_slow)) : 0.0);
+  a.inertia.node_mass = selective ? a.mass.mode_mass() : m_scaled;
+  // Twist: the same model along the chain of edges (spin inertia rho J l per edge).
+  const double I_scaled = a.density_scaled * m.J * ell;
+  const double I_slow = rho_slow * m.J * ell;
+  a.twist_mass = WireMass(I_slow, selective ? std::max(0.0, 0.25 * (I_scaled - I_slow)) : 0.0);
+  a.inertia.edge_twist_inertia = selective ? a.twist_mass.mode_mass() : I_scaled;
 
-  // Damping (see integrate/damping.hpp).
-  const double omega0 = std::sqrt(m.EI() / (a.density_scaled * m.A * std::pow(R, 4)));
-  a.damping.c_transverse = 2.0 * zeta * omega0 * a.inertia.node_mass;
+  // Damping (see integrate/damping.hpp); the transverse rate refers to the slow modes' mass.
+  const double omega0 = std::sqrt(m.EI() / (rho_slow * m.A * std::pow(R, 4)));
+  a.damping.c_transverse = 2.0 * zeta * omega0 * m_slow;
   a.damping.eta_axial = zeta * std::sqrt(2.0 * m.EA() / ell * a.inertia.node_mass);
   a.damping.eta_twist = zeta * std::sqrt(2.0 * m.GJ() / ell * a.inertia.edge_twist_inertia);
+  // Bending-rate dashpot (selective mass): the zig-zag mode (mass m_s, Laplacian eigenvalue 4,
+  // omega_zz^2 = 16 E I / (l^3 m_s)) gets the ratio kZigZagDamping zeta: eta 16 / m_s =
+  // 2 kZigZagDamping zeta omega_zz.
+  if (selective && a.mass.beta() > 0.0) {
+    const double m_zz = a.mass.mode_mass();
+    const double omega_zz = std::sqrt(16.0 * m.EI() / (ell * ell * ell * m_zz));
+    a.damping.eta_bending = 2.0 * SceneConstants::kZigZagDamping * zeta * omega_zz * m_zz / 16.0;
+  }
 
   const bool twist = p.twist_enabled();
   a.feeder.R = R;
@@ -72,7 +92,7 @@ Assembly assemble(const SceneParams& p) {
     wp.E_star = effective_modulus(w.youngs_modulus, w.poisson_ratio,
                                   std::numeric_limits<double>::infinity(), 0.0);
     wp.damping_ratio = zeta;
-    wp.node_mass = a.inertia.node_mass;
+    wp.node_mass = a.mass.point_mass();
     wp.friction = fp;
     auto wall = std::make_unique<SphereWallTerm>(wp);
     a.wall = wall.get();
@@ -120,7 +140,7 @@ Assembly assemble(const SceneParams& p) {
     ws.E_star = effective_modulus(w.youngs_modulus, w.poisson_ratio, sm.E, sm.nu);
     ws.skin = SceneConstants::kSkin * r;
     ws.damping_ratio = zeta;
-    ws.node_mass = a.inertia.node_mass;
+    ws.node_mass = a.mass.point_mass();
     ws.vertex_mass = m_min;
     ws.friction = fp;
     auto contact = std::make_unique<WireShellTerm>(mesh, ws);
@@ -149,7 +169,7 @@ Assembly assemble(const SceneParams& p) {
   sp.element_length = ell;
   sp.skin = SceneConstants::kSkin * r;
   sp.damping_ratio = zeta;
-  sp.node_mass = a.inertia.node_mass;
+  sp.node_mass = a.mass.point_mass();
   sp.friction = fp;
   auto self = std::make_unique<SelfContactTerm>(sp);
   a.self_contact = self.get();

@@ -1,5 +1,6 @@
 #include "engine/simulation.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -20,6 +21,8 @@ struct Simulation::Impl {
   std::vector<double> term_energy;  // per term, at the last evaluation [J]
   double time = 0.0;
   long steps = 0;
+  int mass_nodes = -1;        // free nodes of the last factorisation of the wire's mass matrix
+  int twist_mass_nodes = -1;  // the same for the twist angles' matrix
   std::unique_ptr<ShellWinding> winding;  // inside test (elastic shell only)
 
   explicit Impl(const SceneParams& p)
@@ -56,10 +59,12 @@ struct Simulation::Impl {
       omega2 += assembly.terms[k]->omega_max_sq(assembly.inertia);
     }
     damping.add_forces(s, forces);
-    const int n = s.num_nodes();
-    a.resize(n);
-    const double inv_m = 1.0 / assembly.inertia.node_mass;
-    for (int i = 0; i < n; ++i) a[i] = i < s.n_free ? Vec3(inv_m * forces.f[i]) : Vec3::Zero();
+    // a = M^-1 f over the free nodes (zero for the guide); M changes only when nodes are released.
+    if (s.n_free != mass_nodes) {
+      assembly.mass.factorise(s.n_free, s.num_nodes() > s.n_free);
+      mass_nodes = s.n_free;
+    }
+    assembly.mass.solve(forces.f, a);
     shell_a.assign(s.shell_x.size(), Vec3::Zero());
     if (assembly.mesh) {
       // Shell vertices: forces of the terms minus the vertex damping; clamped ones held.
@@ -72,10 +77,12 @@ struct Simulation::Impl {
     }
     alpha.assign(s.theta.size(), 0.0);
     if (s.has_twist()) {
-      const double inv_i = 1.0 / assembly.inertia.edge_twist_inertia;
-      for (size_t j = 0; j < s.theta.size(); ++j) {
-        if (s.edge_free(static_cast<int>(j))) alpha[j] = inv_i * forces.torque[j];
+      // Free edges [0, n_free - 1), joined to the kinematic edge into the guide.
+      if (s.n_free != twist_mass_nodes) {
+        assembly.twist_mass.factorise(std::max(0, s.n_free - 1), true);
+        twist_mass_nodes = s.n_free;
       }
+      assembly.twist_mass.solve(forces.torque, alpha);
     }
     return omega2;
   }
@@ -199,14 +206,10 @@ Energies Simulation::energies() const {
   e.U_contact = impl_->energy_of("wall") + impl_->energy_of("self_contact") +
                 impl_->energy_of("wire_shell") + impl_->energy_of("shell_self");
   const RodState& s = impl_->state;
-  double k = 0.0;
-  for (int i = 0; i < s.n_free; ++i) k += s.v[i].squaredNorm();
-  e.E_kin = 0.5 * impl_->assembly.inertia.node_mass * k;
-  double kt = 0.0;
-  for (size_t j = 0; j < s.omega.size(); ++j) {
-    if (s.edge_free(static_cast<int>(j))) kt += s.omega[j] * s.omega[j];
+  e.E_kin = impl_->assembly.mass.kinetic_energy(s.v, s.n_free);
+  if (s.has_twist()) {
+    e.E_kin += impl_->assembly.twist_mass.kinetic_energy(s.omega, std::max(0, s.n_free - 1));
   }
-  e.E_kin += 0.5 * impl_->assembly.inertia.edge_twist_inertia * kt;
   const auto& vm = impl_->assembly.vertex_mass;
   for (size_t k = 0; k < s.shell_v.size(); ++k) e.E_kin += 0.5 * vm[k] * s.shell_v[k].squaredNorm();
   return e;

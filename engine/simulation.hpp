@@ -16,7 +16,7 @@ struct Energies {
   double U_b = 0, U_t = 0, U_s = 0;  // wire bending, twist, stretch [J]
   double U_m = 0, U_sb = 0;          // shell membrane, shell bending [J]
   double U_contact = 0;              // stored elastic energy in contacts [J]
-  double E_kin = 0;                  // kinetic energy (scaled masses) [J]
+  double E_kin = 0;                  // kinetic energy, v^T M v / 2 with the simulated masses [J]
 };
 
 class Simulation {

@@ -144,9 +144,9 @@ double SelfContactTerm::energy(const RodState& s) {
   return evaluate(s, nullptr);
 }
 
-double SelfContactTerm::omega_max_sq(const RodInertia& inertia) const {
+double SelfContactTerm::omega_max_sq(const RodInertia&) const {
   // The force of one contact is shared by two nodes per edge: effective mass m / 2.
-  return 2.0 * max_stiffness_ / inertia.node_mass;
+  return 2.0 * max_stiffness_ / p_.node_mass;
 }
 
 }  // namespace wirepack

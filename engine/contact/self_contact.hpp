@@ -34,8 +34,8 @@ struct SelfContactParams {
   double element_length = 0;  // rest element length [m] (sets the neighbour exclusion)
   double skin = 0;            // Verlet-list margin [m]
   double damping_ratio = 0;   // contact dashpot zeta [-]
-  double node_mass = 0;       // [kg]
-  FrictionParams friction;    // off when mu_s = 0
+  double node_mass = 0;     // effective wire node mass of a point load [kg] (WireMass::point_mass)
+  FrictionParams friction;  // off when mu_s = 0
 };
 
 // One touching pair at the last accumulate: edges a < b, closest-point parameters, unit normal

@@ -105,8 +105,8 @@ double SphereWallTerm::energy(const RodState& s) {
   return U;
 }
 
-double SphereWallTerm::omega_max_sq(const RodInertia& inertia) const {
-  return max_stiffness_ / inertia.node_mass;
+double SphereWallTerm::omega_max_sq(const RodInertia&) const {
+  return max_stiffness_ / p_.node_mass;
 }
 
 }  // namespace wirepack

@@ -19,7 +19,7 @@ struct SphereWallParams {
   double hole_radius = 0;    // r_h [m]
   double E_star = 0;         // effective modulus [Pa]
   double damping_ratio = 0;  // contact dashpot zeta [-]
-  double node_mass = 0;      // [kg]
+  double node_mass = 0;      // effective wire node mass of a point load [kg] (WireMass::point_mass)
   FrictionParams friction;   // off when mu_s = 0
 };
 

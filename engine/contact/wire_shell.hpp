@@ -33,9 +33,9 @@ struct WireShellParams {
   double E_star = 0;          // effective modulus [Pa]
   double skin = 0;            // Verlet-list margin [m]
   double damping_ratio = 0;   // normal dashpot ratio [-]
-  double node_mass = 0;       // wire node mass [kg]
-  double vertex_mass = 0;     // shell vertex mass [kg]
-  FrictionParams friction;    // off when mu_s = 0
+  double node_mass = 0;     // effective wire node mass of a point load [kg] (WireMass::point_mass)
+  double vertex_mass = 0;   // shell vertex mass [kg]
+  FrictionParams friction;  // off when mu_s = 0
 };
 
 class WireShellTerm : public Term {

@@ -22,6 +22,18 @@ void RodDamping::add_forces(const RodState& s, RodForces& out) const {
     out.f[j] -= m_gamma * (v - v.dot(tau) * tau);
     t_prev = t;
   }
+  if (p_.eta_bending > 0.0) {
+    // Bending-rate dashpot at interior nodes i with a dynamic neighbourhood: w_i = eta P_i d2v_i,
+    // forces -dD/dv: -w_i on i - 1 and i + 1, +2 w_i on i (rows of the guide are dropped).
+    for (int i = 1; i < n - 1 && i <= nf; ++i) {
+      const Vec3 tau = (out.edge_t[i - 1] + out.edge_t[i]).normalized();
+      const Vec3 d2 = s.v[i - 1] - 2.0 * s.v[i] + s.v[i + 1];
+      const Vec3 w = p_.eta_bending * (d2 - d2.dot(tau) * tau);
+      out.f[i - 1] -= w;
+      out.f[i] += 2.0 * w;
+      out.f[i + 1] -= w;
+    }
+  }
   if (!s.has_twist()) return;
   for (int i = 1; i < n - 1; ++i) {
     const double rel = s.omega[i] - s.omega[i - 1];

@@ -7,7 +7,17 @@
 //    bending frequency scale of a wire curved on the cavity radius;
 //  - axial: a dashpot on the stretch rate of every edge, eta = zeta sqrt(2 k m), k = E A / l,
 //    i.e. ratio zeta for the highest axial mode;
-//  - twist: a dashpot on the relative spin of neighbouring edges, same rule with G J / l, I_theta.
+//  - twist: a dashpot on the relative spin of neighbouring edges, same rule with G J / l, I_theta;
+//  - bending rate (selective mass only): a dashpot on the transverse part of the second
+//    difference of the velocities, dissipation 1/2 eta sum_i |P_i (v_{i-1} - 2 v_i + v_{i+1})|^2
+//    with P_i = I - tau_i tau_i^T, i.e. on the rate of change of the discrete curvature. Zero
+//    for a rigid translation and for the wire sliding along a fixed circle (the second difference
+//    is then tangential), so the sliding coil feels no drag; a mode with Laplacian eigenvalue
+//    lambda is damped at the rate eta lambda^2 / (m_p + beta lambda): the element-scale
+//    zig-zag (lambda = 4) at a set ratio (scene.hpp, kZigZagDamping), the slow, long modes at
+//    next to nothing. With the Laplacian mass (integrate/wire_mass.hpp) the transverse rate
+//    above acts on the slow modes' mass only; this term damps the element-scale modes that
+//    carry the scaled mass, which sliding contacts keep exciting.
 #include "engine/term.hpp"
 
 namespace wirepack {
@@ -16,6 +26,7 @@ struct DampingParams {
   double c_transverse = 0;  // gamma m per node [N s/m]
   double eta_axial = 0;     // [N s/m]
   double eta_twist = 0;     // [N m s]
+  double eta_bending = 0;   // eta of the bending-rate dashpot [N s/m]
 };
 
 class RodDamping {

@@ -105,7 +105,7 @@ TEST(Cli, ValidatePrintsResolvedScene) {
   ASSERT_EQ(f.code, 0) << f.err;
   EXPECT_EQ(nlohmann::json::parse(f.out)["/numerics/tolerance"_json_pointer], 1e-3);
   EXPECT_NE(f.err.find("numerics preset \"fast\": element_length 2 r, shell_mesh_size 4 r, "
-                       "quasistatic_ratio 0.01, tolerance 0.001"),
+                       "quasistatic_ratio 0.02, tolerance 0.001"),
             std::string::npos)
       << f.err;
 

@@ -1,15 +1,18 @@
 // The two morphologies of the paper at its Fig. 3/5b parameters (rho = 20, xi = 10, eps = 1e3,
-// default numerics, seed 1), label "slow" (about 1.5 min on one core): at mu_s = 0 the wire coils
-// (D small), at mu_s = 0.5 it crumples (D large) once it has bifurcated from the coil
-// (l ~ 7.5). Guards the physics that decides the phase, e.g. the damping default: at the former
-// damping ratio 0.5 the mu_s = 0.5 run coiled too (mean D over [9, 12] ~ 0.1).
-// Bounds from the committed runs (results/elastic: over l in [9, 12] D within 0.05-0.15 at
-// mu_s = 0 and 0.48-0.84 at mu_s = 0.5) and the same scenes at the former tolerance 1e-4 and
-// seed 2 (0.03-0.16 and 0.55-0.77); the thresholds sit between.
+// default numerics, seed 1), label "slow" (about 3 min on one core), with the paper's statistic:
+// D maximised over an l window ([8, 14] here, after the injection transient and the entry
+// chord's contribution at l ~ 5). At mu_s = 0 the wire coils (D stays small), at mu_s = 0.5 it
+// bifurcates from the coil (l ~ 7) and loops reorient (D large at times). Guards the physics
+// that decides the phase (damping, inertia). Under the quasi-static numerics (selective mass)
+// the crumpling run alternates between reoriented (D ~ 0.5-0.7) and re-coiled (D ~ 0.1)
+// stretches up to l ~ 14, as the near-physical-inertia reference does, so a mean or minimum of
+// D over a short window no longer separates the phases; the maximum does. Measured (README
+// "Quasi-static regime"): max over [8, 14] 0.10 at mu_s = 0, 0.49-0.68 at mu_s = 0.5.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 #include "analysis/observables.hpp"
@@ -19,36 +22,30 @@
 namespace wirepack::sweep {
 namespace {
 
-// D sampled every 0.25 in l over [9, 12] of the paper's elastic scene at `mu_s`.
+// D sampled every 0.25 in l over [8, 14] of the paper's elastic scene at `mu_s`.
 std::vector<double> late_D(double mu_s) {
   const Scene scene = parse_scene(
-      {{"rho", 20}, {"xi", 10}, {"eps", 1000}, {"mu_s", mu_s}, {"l_max", 12}}, "morphology");
+      {{"rho", 20}, {"xi", 10}, {"eps", 1000}, {"mu_s", mu_s}, {"l_max", 14}}, "morphology");
   Simulation sim(scene.engine);
   std::vector<double> D;
-  for (double l = 9.0; l <= 12.0 + 1e-9; l += 0.25) {
+  for (double l = 8.0; l <= 14.0 + 1e-9; l += 0.25) {
     sim.advance_to(l);
     D.push_back(analysis::order_parameter(sim.inside_nodes()).D);
     EXPECT_TRUE(std::isfinite(D.back()));
   }
+  std::printf("  mu_s %.1f: D over [8, 14] from %.3f to %.3f\n", mu_s,
+              *std::min_element(D.begin(), D.end()), *std::max_element(D.begin(), D.end()));
   return D;
-}
-
-double mean(const std::vector<double>& v) {
-  double s = 0;
-  for (double x : v) s += x;
-  return s / static_cast<double>(v.size());
 }
 
 TEST(Morphology, FrictionlessWireCoils) {
   const auto D = late_D(0.0);
-  EXPECT_LT(*std::max_element(D.begin(), D.end()), 0.35);
-  EXPECT_LT(mean(D), 0.25);
+  EXPECT_LT(*std::max_element(D.begin(), D.end()), 0.25);
 }
 
 TEST(Morphology, FrictionalWireCrumples) {
   const auto D = late_D(0.5);
-  EXPECT_GT(mean(D), 0.4);
-  EXPECT_GT(*std::min_element(D.begin(), D.end()), 0.3);
+  EXPECT_GT(*std::max_element(D.begin(), D.end()), 0.4);
 }
 
 }  // namespace

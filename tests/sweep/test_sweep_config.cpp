@@ -332,7 +332,7 @@ TEST(SweepConfig, PresetAxisAndNumericsKeysOverAPresetBase) {
   // The preset is not part of the run's identity: its resolved values are.
   for (const auto& r : sw.runs) EXPECT_FALSE(r.scene.resolved["numerics"].contains("preset"));
   const Sweep plain = parse_text(R"({"name": "q", "base": {"rho": 20, "mu_s": 0, "shell": "rigid",
-      "numerics": {"element_length": 1e-3, "shell_mesh_size": 2e-3, "quasistatic_ratio": 0.01,
+      "numerics": {"element_length": 1e-3, "shell_mesh_size": 2e-3, "quasistatic_ratio": 0.02,
       "tolerance": 1e-2}}, "grid": {}, "seeds": 1})");
   EXPECT_EQ(plain.runs[0].id, sw.runs[0].id);
 }

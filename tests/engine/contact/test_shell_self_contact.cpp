@@ -379,8 +379,9 @@ TEST(ShellSelfContact, RestSphereFeelsNothing) {
       EXPECT_EQ(term.contacts(), 0);
       EXPECT_EQ(term.vt_candidates() + term.ee_candidates(), 0);
     }
-    // Idle cost: the Verlet displacement check alone (no candidates). Printed; the bound
-    // (20 us, ~10x the measurement) only catches a broad phase run every step.
+    // Idle cost: the Verlet displacement check alone (no candidates), printed (speed is
+    // measured in bench_shell, not asserted); that no broad phase ran while idle is checked
+    // structurally below: the one rebuild counted is the forced one.
     RodForces f;
     f.reset(s);
     const long builds = term.rebuilds();
@@ -400,7 +401,6 @@ TEST(ShellSelfContact, RestSphereFeelsNothing) {
                 std::chrono::duration<double, std::milli>(t3 - t2).count());
     EXPECT_EQ(U, 0.0);
     EXPECT_EQ(term.rebuilds(), builds + 1);
-    EXPECT_LT(ns, 20000.0);
   }
 }
 
