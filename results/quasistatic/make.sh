@@ -2,8 +2,8 @@
 # Reproduces results/quasistatic/: the measurements of the quasi-static numerics (README
 # "Quasi-static regime").
 #  1. damping.csv: the phase against the damping ratio zeta in {0.02, 0.05, 0.2, 0.5} at
-#     mu_s = 0.3 and 0.5 (rho = 20, xi = 10, eps = 1e3, seed 1, l = 15, default numerics): D
-#     maximised and averaged over l in [5, 15] (scenes/damping_sensitivity.sweep.json).
+#     mu_s = 0.3 and 0.5 (rho = 20, xi = 10, eps = 1e3, seed 1, l = 12, default numerics): D
+#     maximised and averaged over l in [5, 12] (scenes/damping_sensitivity.sweep.json).
 #  2. kinetic.csv: E_kin / U_b of the elastic reference runs (results/elastic, to l = 30) over
 #     windows of l, before (the uniform mass scaling, the series committed in 57ad176) and now.
 # ~25 min of CPU for the sweep. Usage (after scripts/setup.sh and results/elastic/make.sh):
