@@ -16,6 +16,7 @@
 #include "analysis/distributions.hpp"
 #include "analysis/purohit.hpp"
 #include "analysis/stats.hpp"
+#include "sweep/critical_table.hpp"
 #include "sweep/errors.hpp"
 #include "sweep/format.hpp"
 #include "sweep/json_file.hpp"
@@ -1184,6 +1185,20 @@ void apply_flags(const AnalyzeOptions& o, AnalysisSettings& s) {
   }
 }
 
+// The grid points as the critical-point fits see them (critical_table.hpp).
+std::vector<CriticalPoint> critical_points(const Analysis& a) {
+  std::vector<CriticalPoint> out;
+  for (const auto& p : a.points) {
+    CriticalPoint c;
+    for (const auto& ptr : a.axes) c.params[ptr] = leaf(p, ptr);
+    c.D = values(p, &Run::D);
+    c.failed = p.failed;
+    c.missing = p.missing;
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
 // Creates OUT (and OUT/plots); InputError when impossible.
 void prepare_out(const fs::path& out) {
   std::error_code ec;
@@ -1230,6 +1245,11 @@ AnalyzeResult analyze_sweep(const AnalyzeOptions& o) {
   files.emplace_back("exponents.csv", exponents_csv(a, fits));
   files.emplace_back("series.csv", series_csv(a, series));
   files.emplace_back("distributions.csv", distributions_csv(a, samples, dists));
+  const auto crit_points = critical_points(a);
+  const auto slices = critical_slices(a.axes, crit_points, a.settings.bootstrap_resamples);
+  files.emplace_back("critical.csv", critical_csv(a.axes, slices));
+  if (has_phase_diagram(a.axes))
+    files.emplace_back("phase_diagram.csv", phase_diagram_csv(a.axes, slices));
   std::set<std::string> written;
   for (const auto& [name, text] : files) {
     const std::string path = (out / name).string();
@@ -1237,12 +1257,14 @@ AnalyzeResult analyze_sweep(const AnalyzeOptions& o) {
     result.csv.push_back(path);
     written.insert(path);
   }
-  remove_stale(out, written, {"D_vs_"});
+  remove_stale(out, written, {"D_vs_", "phase_diagram"});
 
   // Plots: scripts always, PNGs where gnuplot is present.
   std::vector<PlotJob> jobs;
   for (const auto& v : views)
     if (auto job = view_plot(a, v)) jobs.push_back(std::move(*job));
+  for (auto& [name, script] : phase_diagram_plots(a.axes, crit_points, slices))
+    jobs.push_back({name, script});
   for (std::size_t i = 0; i < a.points.size(); ++i) {
     if (a.points[i].complete.empty()) continue;
     jobs.push_back(scaling_plot(a, i, series[i], fits[i]));
@@ -1268,7 +1290,7 @@ AnalyzeResult analyze_sweep(const AnalyzeOptions& o) {
       kept.insert(png + ".log");
     }
   }
-  remove_stale(plot_dir, kept, {"D_vs_", "scaling_p", "distributions_p"});
+  remove_stale(plot_dir, kept, {"D_vs_", "scaling_p", "distributions_p", "phase_"});
   if (o.gnuplot.empty())
     result.plot_notice = "plots not drawn (--no-plots); gnuplot scripts in " + plot_dir.string();
   else if (gnuplot.empty())
@@ -1290,6 +1312,21 @@ AnalyzeResult analyze_sweep(const AnalyzeOptions& o) {
   result.settings = a.settings;
   result.distribution_l = a.distribution_l;
   return result;
+}
+
+CriticalData read_critical_data(const AnalyzeOptions& o) {
+  Analysis a;
+  a.settings = default_analysis_settings();
+  Directory d = open_directory(o.dir, a.settings);
+  apply_flags(o, a.settings);
+  read_runs(o.dir, d, a.settings);
+  a.runs = std::move(d.runs);
+  group(a, d.sweep);
+  CriticalData c;
+  c.axes = a.axes;
+  c.points = critical_points(a);
+  c.settings = a.settings;
+  return c;
 }
 
 }  // namespace wirepack::sweep

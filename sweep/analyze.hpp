@@ -14,6 +14,9 @@
 //                      tau (N) per grid point: pooled log-log OLS, seed-bootstrap stderr
 //   series.csv         seed-averaged series over l per grid point, with the Purohit predictions
 //                      of U_b_hat and K (paper Eqs. 4-7) from each run's measured radii
+//   critical.csv       per swept transition parameter (mu_s, eps, xi, rho) and combination of
+//                      the others: x_c of D(x) with its bootstrap interval (critical_table.hpp)
+//   phase_diagram.csv  with two swept parameters: x_c of one against the other
 //   distributions.csv  lognormal fits of kappa^2/<kappa^2> and Lambda/r at one l, with the
 //                      histogram of the logarithm
 //   plots/*.gp, *.png  gnuplot scripts (data inline) and their PNGs where gnuplot is present
@@ -26,6 +29,8 @@
 #include <vector>
 
 #include <nlohmann/json.hpp>
+
+#include "sweep/critical_table.hpp"
 
 namespace wirepack::sweep {
 
@@ -104,5 +109,14 @@ struct AnalyzeResult {
 // directory, no run files and no manifest), a manifest cannot be parsed, a setting breaks its
 // rule, or OUT cannot be created; nothing is written then.
 AnalyzeResult analyze_sweep(const AnalyzeOptions& options);
+
+// The per-point D of DIR for the critical-point fits (`wirepack refine`): DIR read as by
+// analyze_sweep (same settings and errors), nothing written.
+struct CriticalData {
+  std::vector<std::string> axes;      // swept parameters (JSON pointers), analysis order
+  std::vector<CriticalPoint> points;  // in point order
+  AnalysisSettings settings;
+};
+CriticalData read_critical_data(const AnalyzeOptions& options);
 
 }  // namespace wirepack::sweep

@@ -390,8 +390,19 @@ TEST_F(Analyze, FullRunWritesEveryFileWithOneHeaderRowDeterministically) {
   o.gnuplot = "gnuplot-that-does-not-exist";
   const AnalyzeResult r = analyze(o);
   const std::vector<std::string> names = {"runs.csv",      "curves.csv", "D_vs_mu_s.csv",
-                                          "exponents.csv", "series.csv", "distributions.csv"};
+                                          "exponents.csv", "series.csv", "distributions.csv",
+                                          "critical.csv"};
   ASSERT_EQ(r.csv.size(), names.size());
+  // Two values of mu_s: a row that says so, no number that looks like a result.
+  const Csv crit = read_csv(out("critical.csv"));
+  ASSERT_EQ(crit.rows.size(), 1u);
+  EXPECT_EQ(crit.rows[0].at("axis"), "mu_s");
+  EXPECT_EQ(crit.rows[0].at("status"), "too few points");
+  EXPECT_EQ(crit.rows[0].at("x_c"), "nan");
+  EXPECT_EQ(crit.rows[0].at("points"), "2");
+  EXPECT_EQ(crit.rows[0].at("values"), "5");
+  EXPECT_EQ(crit.rows[0].at("n_failed"), "1");
+  EXPECT_FALSE(fs::exists(out("phase_diagram.csv")));
   std::map<std::string, std::string> first;
   for (std::size_t i = 0; i < names.size(); ++i) {
     EXPECT_EQ(r.csv[i], out(names[i]));
