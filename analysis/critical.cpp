@@ -126,7 +126,8 @@ std::array<double, 3> minimize2(const F& f, double lo0, double hi0, int n0, doub
     std::sort(o.begin(), o.end(), [&](int a, int b) { return fx[a] < fx[b]; });
     const auto& xb = x[o[0]];
     const auto& xw = x[o[2]];
-    const double size = std::max(std::abs(x[o[1]][0] - xb[0]) + std::abs(xw[0] - xb[0]), 0.0) / s0 +
+    // Simplex size in grid steps.
+    const double size = (std::abs(x[o[1]][0] - xb[0]) + std::abs(xw[0] - xb[0])) / s0 +
                         (std::abs(x[o[1]][1] - xb[1]) + std::abs(xw[1] - xb[1])) / s1;
     if (size < 1e-6) break;
     const std::array<double, 2> c = {(xb[0] + x[o[1]][0]) / 2, (xb[1] + x[o[1]][1]) / 2};
@@ -295,10 +296,11 @@ CriticalResult fit_critical(const std::vector<CriticalSample>& samples,
   }
   if (!(u_c > lo_ok && u_c < hi_ok)) {
     r.status = "no transition in range";
+    const bool low = u_c <= lo_ok;
     r.note = std::string(smooth ? "smooth" : "continuous") + " fit puts x_c = " + fmt(to_x(u_c)) +
-             " at the " + (u_c <= lo_ok ? "lower" : "upper") +
-             " edge of the range: extend the grid " + (u_c <= lo_ok ? "below " : "above ") +
-             fmt(u_c <= lo_ok ? r.x_min : r.x_max);
+             " at the " + (low ? "lower" : "upper") + " edge of the range [" + fmt(r.x_min) + ", " +
+             fmt(r.x_max) + "]: add grid values " + (low ? "near or below " : "near or above ") +
+             fmt(low ? r.x_min : r.x_max);
     return r;
   }
 
