@@ -270,6 +270,11 @@ int main(int argc, char** argv) {
   auto* bins_opt = analyze->add_option("--bins", bins, "histogram bins (default 30)");
   auto* resamples_opt = analyze->add_option(
       "--resamples", resamples, "seed-bootstrap resamples of the exponents (default 1000; 0: off)");
+  analyze
+      ->add_option("--critical-range", analyze_opt.critical_ranges,
+                   "NAME=X_MIN,X_MAX: fit the critical point of NAME (mu_s, eps, xi, rho) on the "
+                   "grid values inside only, e.g. mu_s=0,0.6; repeatable")
+      ->allow_extra_args(false);
   analyze->add_flag("--no-plots", no_plots, "write the gnuplot scripts but do not run gnuplot");
 
   RefineOptions refine_opt;
@@ -297,6 +302,10 @@ int main(int argc, char** argv) {
       "--budget", budget,
       "most runs the refinement may hold in DIR in all, across reruns (default: one round; "
       "with --until-ci, 10 rounds)");
+  refine
+      ->add_option("--critical-range", refine_opt.critical_ranges,
+                   "NAME=X_MIN,X_MAX: fit and refine inside this range only (as for analyze)")
+      ->allow_extra_args(false);
   refine->add_option("-j,--threads", refine_opt.threads, "concurrent runs (default: all cores)")
       ->check(CLI::Range(1, 4096));
 

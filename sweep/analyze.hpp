@@ -26,6 +26,7 @@
 #include <optional>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -56,6 +57,9 @@ struct AnalysisSettings {
   std::optional<double> distribution_l;        // none: the last snapshot common to the runs
   int histogram_bins = 30;                     // bins of each distribution histogram
   int bootstrap_resamples = 1000;              // seed-bootstrap resamples (< 2: no bootstrap)
+  // Ranges of the critical-point fits: parameter pointer ("/mu_s") -> [x_min, x_max]; grid
+  // values outside are left out of that parameter's fits (e.g. a falling tail of D).
+  std::map<std::string, std::pair<double, double>> critical_ranges;
 };
 
 // Defaults: every window [5, 50], distribution at the last common snapshot, 30 bins, 1000
@@ -73,12 +77,13 @@ struct AnalyzeOptions {
   std::string dir;  // the sweep directory (DIR/runs/*.h5, DIR/manifest*.json)
   std::string out;  // output directory; "" = DIR/analysis
   // Command-line overrides of the analysis block:
-  std::optional<std::string> D_window;   // "L_MIN,L_MAX"
-  std::vector<std::string> fit_windows;  // "L_MIN,L_MAX" (every exponent) or "NAME=L_MIN,L_MAX"
-  std::optional<double> at_l;            // l of the distributions
-  std::optional<int> bins;               // histogram bins
-  std::optional<int> resamples;          // bootstrap resamples
-  std::string gnuplot = "gnuplot";       // plotting program (PATH is searched); "" = no plots
+  std::optional<std::string> D_window;       // "L_MIN,L_MAX"
+  std::vector<std::string> fit_windows;      // "L_MIN,L_MAX" (every exponent) or "NAME=L_MIN,L_MAX"
+  std::optional<double> at_l;                // l of the distributions
+  std::optional<int> bins;                   // histogram bins
+  std::optional<int> resamples;              // bootstrap resamples
+  std::vector<std::string> critical_ranges;  // "NAME=X_MIN,X_MAX" (mu_s, eps, xi, rho)
+  std::string gnuplot = "gnuplot";           // plotting program (PATH is searched); "" = no plots
 };
 
 // A run that did not enter the statistics.

@@ -66,14 +66,17 @@ std::vector<analysis::CriticalSample> slice_samples(const CriticalSlice& slice,
   for (const std::size_t i : slice.points) {
     const json& x = param(points[i], slice.axis);
     if (!x.is_number()) continue;
+    if (slice.range &&
+        (x.get<double>() < slice.range->first || x.get<double>() > slice.range->second))
+      continue;
     out.push_back({x.get<double>(), points[i].D});
   }
   return out;
 }
 
-std::vector<CriticalSlice> critical_slices(const std::vector<std::string>& axes,
-                                           const std::vector<CriticalPoint>& points, int resamples,
-                                           const std::string& only) {
+std::vector<CriticalSlice> critical_slices(
+    const std::vector<std::string>& axes, const std::vector<CriticalPoint>& points, int resamples,
+    const std::string& only, const std::map<std::string, std::pair<double, double>>& ranges) {
   std::vector<CriticalSlice> slices;
   for (const auto& axis : axes) {
     if (!is_transition_axis(axis) || (!only.empty() && axis != only)) continue;
@@ -94,6 +97,7 @@ std::vector<CriticalSlice> critical_slices(const std::vector<std::string>& axes,
         s.at = at;
         s.options.log_x = fitted_in_log(axis);
         s.options.resamples = resamples;
+        if (const auto r = ranges.find(axis); r != ranges.end()) s.range = r->second;
         slices.push_back(std::move(s));
         it = keys.end() - 1;
       }
@@ -105,6 +109,9 @@ std::vector<CriticalSlice> critical_slices(const std::vector<std::string>& axes,
   }
   for (auto& s : slices) {
     s.fit = analysis::fit_critical(slice_samples(s, points), s.options);
+    if (s.range)
+      s.fit.note += (s.fit.note.empty() ? "" : "; ") + std::string("fitted on [") +
+                    num(s.range->first) + ", " + num(s.range->second) + "] (critical_ranges)";
     if (s.failed + s.missing > 0)
       s.fit.note += (s.fit.note.empty() ? "" : "; ") + std::to_string(s.failed) + " failed and " +
                     std::to_string(s.missing) + " missing run(s) left out";

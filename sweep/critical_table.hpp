@@ -5,6 +5,7 @@
 // plots. The README's section "Critical points" documents every column.
 #include <cstddef>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -30,6 +31,7 @@ struct CriticalSlice {
   std::vector<std::size_t> points;                         // indices of its points
   std::size_t failed = 0, missing = 0;                     // runs over its points
   analysis::CriticalOptions options;                       // log_x for eps
+  std::optional<std::pair<double, double>> range;          // [x_min, x_max] fitted, if set
   analysis::CriticalResult fit;
 };
 
@@ -38,16 +40,19 @@ bool is_transition_axis(const std::string& pointer);
 // eps is fitted in log10(eps) (its values span decades); the others linearly.
 bool fitted_in_log(const std::string& pointer);
 
-// The per-seed D of a slice's points (x: the axis value; non-numeric values are left out).
+// The per-seed D of a slice's points (x: the axis value; non-numeric values and values outside
+// the slice's range are left out).
 std::vector<analysis::CriticalSample> slice_samples(const CriticalSlice& slice,
                                                     const std::vector<CriticalPoint>& points);
 
 // Every slice of every swept transition parameter among `axes` (the swept parameters in
 // analysis order), or of `only` alone when it is not empty; slices in order of first appearance
-// of their `at` values in `points`. Each is fitted with `resamples` bootstrap resamples.
-std::vector<CriticalSlice> critical_slices(const std::vector<std::string>& axes,
-                                           const std::vector<CriticalPoint>& points, int resamples,
-                                           const std::string& only = "");
+// of their `at` values in `points`. Each is fitted with `resamples` bootstrap resamples, on the
+// grid values inside ranges[axis] where given.
+std::vector<CriticalSlice> critical_slices(
+    const std::vector<std::string>& axes, const std::vector<CriticalPoint>& points, int resamples,
+    const std::string& only = "",
+    const std::map<std::string, std::pair<double, double>>& ranges = {});
 
 // critical.csv: one row per slice (header only when there is none).
 std::string critical_csv(const std::vector<std::string>& axes,

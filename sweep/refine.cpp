@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -80,12 +81,19 @@ double width(const analysis::CriticalResult& f) {
   return f.status == "ok" ? f.x_c_hi - f.x_c_lo : NAN;
 }
 
+// 4 significant digits, for messages.
+std::string short_number(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof(buf), "%.4g", x);
+  return buf;
+}
+
 std::string fit_text(const analysis::CriticalResult& f) {
   if (!std::isfinite(f.x_c)) return f.status + (f.note.empty() ? "" : ": " + f.note);
-  std::string t = "x_c = " + format_number(f.x_c);
+  std::string t = "x_c = " + short_number(f.x_c);
   if (f.status == "ok")
-    t += " [" + format_number(f.x_c_lo) + ", " + format_number(f.x_c_hi) + "], width " +
-         format_number(width(f));
+    t += " [" + short_number(f.x_c_lo) + ", " + short_number(f.x_c_hi) + "], width " +
+         short_number(width(f));
   return t + " (" + f.status + ", " + f.model + ", " + std::to_string(f.points) + " points)";
 }
 
@@ -180,9 +188,10 @@ RefineOutcome refine_sweep(const RefineOptions& o) {
 
     AnalyzeOptions ao;
     ao.dir = o.dir;
+    ao.critical_ranges = o.critical_ranges;
     const CriticalData data = read_critical_data(ao);
-    const auto slices =
-        critical_slices(data.axes, data.points, data.settings.bootstrap_resamples, axis);
+    const auto slices = critical_slices(data.axes, data.points, data.settings.bootstrap_resamples,
+                                        axis, data.settings.critical_ranges);
     out.listed_runs = sw.listed_points.size() * seeds;
     out.lines.clear();
     for (const auto& s : slices)

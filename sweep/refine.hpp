@@ -23,6 +23,7 @@ struct RefineOptions {
   std::optional<double> until_ci;  // stop when every slice's interval is at most this wide
   std::optional<long> budget;      // most runs the listed points may hold; default one round
   int threads = 0;                 // concurrent runs; 0: every core
+  std::vector<std::string> critical_ranges;  // "NAME=X_MIN,X_MAX": fit and refine inside
   std::ostream* progress = nullptr;
 };
 

@@ -131,6 +131,26 @@ TEST(CriticalTable, PhaseDiagramWithTwoAxes) {
   EXPECT_EQ(phase_diagram_csv({"/mu_s"}, slices), "");
 }
 
+// A falling tail beyond the crumpled maximum (as D(mu_s) at l = 20) is left out by a range.
+TEST(CriticalTable, RangeLeavesOutTheGridValuesOutsideIt) {
+  auto points = grid();
+  for (auto& p : points)
+    if (p.params.at("/mu_s").get<double>() > 0.6)
+      for (double& d : p.D) d = 0.2;  // D falls back after 0.6
+  const std::vector<std::string> axes = {"/mu_s", "/eps"};
+  const auto slices = critical_slices(axes, points, 200, "/mu_s", {{"/mu_s", {0, 0.6}}});
+  ASSERT_EQ(slices.size(), 3u);
+  for (const auto& s : slices) {
+    ASSERT_TRUE(s.range);
+    EXPECT_EQ(s.fit.x_max, 0.6);
+    EXPECT_EQ(s.fit.points, 9u);  // 0, 0.075, ..., 0.6
+    EXPECT_NE(s.fit.note.find("fitted on [0, 0.6] (critical_ranges)"), std::string::npos);
+    ASSERT_EQ(s.fit.status, "ok") << s.fit.note;
+    EXPECT_NEAR(s.fit.x_c, mu_c(s.at[0].second.get<double>()), 0.04);
+  }
+  EXPECT_EQ(slice_samples(slices[0], points).size(), 9u);
+}
+
 TEST(CriticalTable, OnlyOneAxisAndNoTransitionAxes) {
   const auto points = grid();
   EXPECT_EQ(critical_slices({"/mu_s", "/eps"}, points, 50, "/mu_s").size(), 3u);
