@@ -16,6 +16,7 @@
 #include "sweep/export.hpp"
 #include "sweep/format.hpp"
 #include "sweep/json_file.hpp"
+#include "sweep/refine.hpp"
 #include "sweep/run.hpp"
 #include "sweep/run_file.hpp"
 #include "sweep/scene_config.hpp"
@@ -162,6 +163,19 @@ int cmd_analyze(const AnalyzeOptions& opt) {
   return kOk;
 }
 
+// Issue 16: rounds of new grid values at the transition, run into DIR. Exit 0, 1 when runs of
+// the sweep failed, 2 on bad input (nothing written).
+int cmd_refine(const RefineOptions& o) {
+  const RefineOutcome r = refine_sweep(o);
+  std::cerr << "refine " << o.dir << ": " << r.rounds << " round" << (r.rounds == 1 ? "" : "s")
+            << " added " << r.added_runs << " runs (" << r.listed_runs
+            << " refinement runs in all); stopped: " << r.stop << '\n';
+  for (const auto& line : r.lines) std::cerr << "  " << line << '\n';
+  if (r.failed > 0) std::cerr << "  " << r.failed << " run(s) of the sweep failed\n";
+  if (!r.sweep_file.empty()) std::cout << r.sweep_file << '\n';
+  return r.failed > 0 ? kRunFailed : kOk;
+}
+
 int cmd_accuracy(AccuracyOptions o, const std::string& window) {
   if (!window.empty()) {
     const auto comma = window.find(',');
@@ -256,7 +270,44 @@ int main(int argc, char** argv) {
   auto* bins_opt = analyze->add_option("--bins", bins, "histogram bins (default 30)");
   auto* resamples_opt = analyze->add_option(
       "--resamples", resamples, "seed-bootstrap resamples of the exponents (default 1000; 0: off)");
+  analyze
+      ->add_option("--critical-range", analyze_opt.critical_ranges,
+                   "NAME=X_MIN,X_MAX: fit the critical point of NAME (mu_s, eps, xi, rho) on the "
+                   "grid values inside only, e.g. mu_s=0,0.6; repeatable")
+      ->allow_extra_args(false);
   analyze->add_flag("--no-plots", no_plots, "write the gnuplot scripts but do not run gnuplot");
+
+  RefineOptions refine_opt;
+  double until_ci = 0;
+  long budget = 0;
+  auto* refine = app.add_subcommand(
+      "refine",
+      "add grid values where they narrow the interval of the critical point most (before a "
+      "fit: where D changes fastest) and run them with the same seeds; resumable (README "
+      "\"Critical points\")");
+  refine->add_option("dir", refine_opt.dir, "sweep directory (written by wirepack sweep)")
+      ->required();
+  refine->add_option("--axis", refine_opt.axis,
+                     "the parameter to refine: mu_s, eps, xi or rho (default mu_s if swept, else "
+                     "the one swept)");
+  refine
+      ->add_option("--runs", refine_opt.runs,
+                   "new runs per slice and round, in whole points of all seeds (default 4 "
+                   "points)")
+      ->check(CLI::Range(1, 100000));
+  auto* until_ci_opt = refine->add_option(
+      "--until-ci", until_ci,
+      "stop when every 95 % interval of x_c is at most this wide (units of the parameter)");
+  auto* budget_opt = refine->add_option(
+      "--budget", budget,
+      "most runs the refinement may hold in DIR in all, across reruns (default: one round; "
+      "with --until-ci, 10 rounds)");
+  refine
+      ->add_option("--critical-range", refine_opt.critical_ranges,
+                   "NAME=X_MIN,X_MAX: fit and refine inside this range only (as for analyze)")
+      ->allow_extra_args(false);
+  refine->add_option("-j,--threads", refine_opt.threads, "concurrent runs (default: all cores)")
+      ->check(CLI::Range(1, 4096));
 
   AccuracyOptions accuracy_opt;
   std::string accuracy_window;
@@ -308,6 +359,12 @@ int main(int argc, char** argv) {
       if (*resamples_opt) analyze_opt.resamples = resamples;
       if (no_plots) analyze_opt.gnuplot.clear();
       return cmd_analyze(analyze_opt);
+    }
+    if (*refine) {
+      if (*until_ci_opt) refine_opt.until_ci = until_ci;
+      if (*budget_opt) refine_opt.budget = budget;
+      refine_opt.progress = &std::cerr;
+      return cmd_refine(refine_opt);
     }
     if (*accuracy) {
       if (accuracy_no_plots) accuracy_opt.gnuplot.clear();

@@ -16,6 +16,7 @@
 #include "analysis/distributions.hpp"
 #include "analysis/purohit.hpp"
 #include "analysis/stats.hpp"
+#include "sweep/critical_table.hpp"
 #include "sweep/errors.hpp"
 #include "sweep/format.hpp"
 #include "sweep/json_file.hpp"
@@ -51,6 +52,15 @@ constexpr int kMaxResamples = 100000;
 // A run's snapshot is "at" l when it lies within this distance in l (snapshots are taken at the
 // first step past each multiple of output.snapshots_every_l, so they overshoot by a step).
 constexpr double kSnapshotTolerance = 0.05;
+
+constexpr const char* kRangeRule = "must be [x_min, x_max] with x_min < x_max";
+
+std::optional<std::pair<double, double>> range_from_json(const json& v) {
+  if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number()) return {};
+  const double a = v[0].get<double>(), b = v[1].get<double>();
+  if (!std::isfinite(a) || !std::isfinite(b) || !(a < b)) return {};
+  return std::pair{a, b};
+}
 
 std::optional<LWindow> window_from_json(const json& v) {
   if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number()) return {};
@@ -110,9 +120,9 @@ void apply_analysis_block(const json& block, const std::string& source, const st
     errors.push_back(source + ": " + pointer_child(pointer, key) + ": " + rule + " (got " +
                      got_text(got) + ")");
   };
-  static const std::vector<std::string> keys = {"D_window",       "fit_window",
-                                                "fit_windows",    "distribution_l",
-                                                "histogram_bins", "bootstrap_resamples"};
+  static const std::vector<std::string> keys = {
+      "D_window",       "fit_window",          "fit_windows",    "distribution_l",
+      "histogram_bins", "bootstrap_resamples", "critical_ranges"};
   for (const auto& [key, value] : block.items()) {
     if (std::find(keys.begin(), keys.end(), key) != keys.end()) continue;
     std::string valid;
@@ -174,6 +184,24 @@ void apply_analysis_block(const json& block, const std::string& source, const st
       fail("bootstrap_resamples",
            "must be an integer in [0, " + std::to_string(kMaxResamples) + "] (0: no bootstrap)",
            *it);
+  }
+  if (const auto it = block.find("critical_ranges"); it != block.end()) {
+    if (!it->is_object()) {
+      fail("critical_ranges", "must be an object {\"<parameter>\": [x_min, x_max]}", *it);
+    } else {
+      const std::string ptr = pointer_child(pointer, "critical_ranges");
+      for (const auto& [name, value] : it->items()) {
+        if (!is_transition_axis("/" + name)) {
+          errors.push_back(source + ": " + pointer_child(ptr, name) +
+                           ": not a transition parameter; valid: mu_s, eps, xi, rho");
+        } else if (const auto r = range_from_json(value)) {
+          s.critical_ranges["/" + name] = *r;
+        } else {
+          errors.push_back(source + ": " + pointer_child(ptr, name) + ": " + kRangeRule + " (got " +
+                           got_text(value) + ")");
+        }
+      }
+    }
   }
   if (!errors.empty()) throw InputError(errors);
 }
@@ -1182,6 +1210,36 @@ void apply_flags(const AnalyzeOptions& o, AnalysisSettings& s) {
                        "] (got " + std::to_string(*o.resamples) + ")");
     s.bootstrap_resamples = *o.resamples;
   }
+  for (const auto& text : o.critical_ranges) {
+    const auto eq = text.find('=');
+    const auto comma = text.find(',', eq == std::string::npos ? 0 : eq);
+    const std::string name = text.substr(0, eq);
+    std::optional<double> a, b;
+    if (eq != std::string::npos && comma != std::string::npos) {
+      a = to_double(text.substr(eq + 1, comma - eq - 1));
+      b = to_double(text.substr(comma + 1));
+    }
+    if (eq == std::string::npos || !is_transition_axis("/" + name) || !a || !b || !(*a < *b))
+      throw InputError(
+          "--critical-range: must be NAME=X_MIN,X_MAX with NAME one of mu_s, eps, xi, rho and "
+          "X_MIN < X_MAX, e.g. mu_s=0,0.6 (got \"" +
+          text + "\")");
+    s.critical_ranges["/" + name] = {*a, *b};
+  }
+}
+
+// The grid points as the critical-point fits see them (critical_table.hpp).
+std::vector<CriticalPoint> critical_points(const Analysis& a) {
+  std::vector<CriticalPoint> out;
+  for (const auto& p : a.points) {
+    CriticalPoint c;
+    for (const auto& ptr : a.axes) c.params[ptr] = leaf(p, ptr);
+    c.D = values(p, &Run::D);
+    c.failed = p.failed;
+    c.missing = p.missing;
+    out.push_back(std::move(c));
+  }
+  return out;
 }
 
 // Creates OUT (and OUT/plots); InputError when impossible.
@@ -1230,6 +1288,12 @@ AnalyzeResult analyze_sweep(const AnalyzeOptions& o) {
   files.emplace_back("exponents.csv", exponents_csv(a, fits));
   files.emplace_back("series.csv", series_csv(a, series));
   files.emplace_back("distributions.csv", distributions_csv(a, samples, dists));
+  const auto crit_points = critical_points(a);
+  const auto slices = critical_slices(a.axes, crit_points, a.settings.bootstrap_resamples, "",
+                                      a.settings.critical_ranges);
+  files.emplace_back("critical.csv", critical_csv(a.axes, slices));
+  if (has_phase_diagram(a.axes))
+    files.emplace_back("phase_diagram.csv", phase_diagram_csv(a.axes, slices));
   std::set<std::string> written;
   for (const auto& [name, text] : files) {
     const std::string path = (out / name).string();
@@ -1237,12 +1301,14 @@ AnalyzeResult analyze_sweep(const AnalyzeOptions& o) {
     result.csv.push_back(path);
     written.insert(path);
   }
-  remove_stale(out, written, {"D_vs_"});
+  remove_stale(out, written, {"D_vs_", "phase_diagram"});
 
   // Plots: scripts always, PNGs where gnuplot is present.
   std::vector<PlotJob> jobs;
   for (const auto& v : views)
     if (auto job = view_plot(a, v)) jobs.push_back(std::move(*job));
+  for (auto& [name, script] : phase_diagram_plots(a.axes, crit_points, slices))
+    jobs.push_back({name, script});
   for (std::size_t i = 0; i < a.points.size(); ++i) {
     if (a.points[i].complete.empty()) continue;
     jobs.push_back(scaling_plot(a, i, series[i], fits[i]));
@@ -1268,7 +1334,7 @@ AnalyzeResult analyze_sweep(const AnalyzeOptions& o) {
       kept.insert(png + ".log");
     }
   }
-  remove_stale(plot_dir, kept, {"D_vs_", "scaling_p", "distributions_p"});
+  remove_stale(plot_dir, kept, {"D_vs_", "scaling_p", "distributions_p", "phase_"});
   if (o.gnuplot.empty())
     result.plot_notice = "plots not drawn (--no-plots); gnuplot scripts in " + plot_dir.string();
   else if (gnuplot.empty())
@@ -1290,6 +1356,21 @@ AnalyzeResult analyze_sweep(const AnalyzeOptions& o) {
   result.settings = a.settings;
   result.distribution_l = a.distribution_l;
   return result;
+}
+
+CriticalData read_critical_data(const AnalyzeOptions& o) {
+  Analysis a;
+  a.settings = default_analysis_settings();
+  Directory d = open_directory(o.dir, a.settings);
+  apply_flags(o, a.settings);
+  read_runs(o.dir, d, a.settings);
+  a.runs = std::move(d.runs);
+  group(a, d.sweep);
+  CriticalData c;
+  c.axes = a.axes;
+  c.points = critical_points(a);
+  c.settings = a.settings;
+  return c;
 }
 
 }  // namespace wirepack::sweep

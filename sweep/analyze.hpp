@@ -14,6 +14,9 @@
 //                      tau (N) per grid point: pooled log-log OLS, seed-bootstrap stderr
 //   series.csv         seed-averaged series over l per grid point, with the Purohit predictions
 //                      of U_b_hat and K (paper Eqs. 4-7) from each run's measured radii
+//   critical.csv       per swept transition parameter (mu_s, eps, xi, rho) and combination of
+//                      the others: x_c of D(x) with its bootstrap interval (critical_table.hpp)
+//   phase_diagram.csv  with two swept parameters: x_c of one against the other
 //   distributions.csv  lognormal fits of kappa^2/<kappa^2> and Lambda/r at one l, with the
 //                      histogram of the logarithm
 //   plots/*.gp, *.png  gnuplot scripts (data inline) and their PNGs where gnuplot is present
@@ -23,9 +26,12 @@
 #include <optional>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
+
+#include "sweep/critical_table.hpp"
 
 namespace wirepack::sweep {
 
@@ -51,6 +57,9 @@ struct AnalysisSettings {
   std::optional<double> distribution_l;        // none: the last snapshot common to the runs
   int histogram_bins = 30;                     // bins of each distribution histogram
   int bootstrap_resamples = 1000;              // seed-bootstrap resamples (< 2: no bootstrap)
+  // Ranges of the critical-point fits: parameter pointer ("/mu_s") -> [x_min, x_max]; grid
+  // values outside are left out of that parameter's fits (e.g. a falling tail of D).
+  std::map<std::string, std::pair<double, double>> critical_ranges;
 };
 
 // Defaults: every window [5, 50], distribution at the last common snapshot, 30 bins, 1000
@@ -68,12 +77,13 @@ struct AnalyzeOptions {
   std::string dir;  // the sweep directory (DIR/runs/*.h5, DIR/manifest*.json)
   std::string out;  // output directory; "" = DIR/analysis
   // Command-line overrides of the analysis block:
-  std::optional<std::string> D_window;   // "L_MIN,L_MAX"
-  std::vector<std::string> fit_windows;  // "L_MIN,L_MAX" (every exponent) or "NAME=L_MIN,L_MAX"
-  std::optional<double> at_l;            // l of the distributions
-  std::optional<int> bins;               // histogram bins
-  std::optional<int> resamples;          // bootstrap resamples
-  std::string gnuplot = "gnuplot";       // plotting program (PATH is searched); "" = no plots
+  std::optional<std::string> D_window;       // "L_MIN,L_MAX"
+  std::vector<std::string> fit_windows;      // "L_MIN,L_MAX" (every exponent) or "NAME=L_MIN,L_MAX"
+  std::optional<double> at_l;                // l of the distributions
+  std::optional<int> bins;                   // histogram bins
+  std::optional<int> resamples;              // bootstrap resamples
+  std::vector<std::string> critical_ranges;  // "NAME=X_MIN,X_MAX" (mu_s, eps, xi, rho)
+  std::string gnuplot = "gnuplot";           // plotting program (PATH is searched); "" = no plots
 };
 
 // A run that did not enter the statistics.
@@ -104,5 +114,14 @@ struct AnalyzeResult {
 // directory, no run files and no manifest), a manifest cannot be parsed, a setting breaks its
 // rule, or OUT cannot be created; nothing is written then.
 AnalyzeResult analyze_sweep(const AnalyzeOptions& options);
+
+// The per-point D of DIR for the critical-point fits (`wirepack refine`): DIR read as by
+// analyze_sweep (same settings and errors), nothing written.
+struct CriticalData {
+  std::vector<std::string> axes;      // swept parameters (JSON pointers), analysis order
+  std::vector<CriticalPoint> points;  // in point order
+  AnalysisSettings settings;
+};
+CriticalData read_critical_data(const AnalyzeOptions& options);
 
 }  // namespace wirepack::sweep

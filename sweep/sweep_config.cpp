@@ -24,7 +24,8 @@ constexpr std::size_t kMaxReadable = 120;
 
 // Top-level keys of a sweep file, in documentation order.
 const std::vector<std::string>& sweep_keys() {
-  static const std::vector<std::string> keys = {"name", "base", "grid", "seeds", "analysis"};
+  static const std::vector<std::string> keys = {"name",  "base",     "grid",
+                                                "seeds", "analysis", "points"};
   return keys;
 }
 
@@ -239,14 +240,76 @@ void parse_axes(const json& grid, Messages& msg, std::vector<GridAxis>& axes) {
             [](const GridAxis& a, const GridAxis& b) { return a.pointer < b.pointer; });
 }
 
+// The listed points (/points): objects giving a value for every grid axis, none repeating a
+// grid point or an earlier listed one. Appends to values and where (see parse_sweep).
+void parse_points(const json& list, const std::vector<GridAxis>& axes, Messages& msg,
+                  std::vector<std::vector<json>>& values,
+                  std::vector<std::vector<std::string>>& where) {
+  if (!list.is_array()) {
+    msg.fail("/points", "must be a list of points {\"<grid axis>\": value, ...} (got " +
+                            describe_value(list) + ")");
+    return;
+  }
+  if (axes.empty() && !list.empty()) {
+    msg.fail("/points", "listed points need grid axes (/grid names the keys they set)");
+    return;
+  }
+  std::map<std::string, std::size_t> seen;  // canonical point -> index in values
+  for (std::size_t p = 0; p < values.size(); ++p) seen.emplace(canonical_json(values[p]), p);
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    const std::string here = "/points/" + std::to_string(k);
+    const json& obj = list[k];
+    if (!obj.is_object()) {
+      msg.fail(here, "a point must be an object {\"<grid axis>\": value, ...} (got " +
+                         describe_value(obj) + ")");
+      continue;
+    }
+    bool ok = true;
+    std::string keys;
+    for (const auto& axis : axes) keys += (keys.empty() ? "" : ", ") + axis.key;
+    for (const auto& [key, v] : obj.items()) {
+      if (std::none_of(axes.begin(), axes.end(), [&](const GridAxis& a) { return a.key == key; })) {
+        msg.fail(pointer_child(here, key), "not a grid axis; a point sets exactly: " + keys);
+        ok = false;
+      }
+    }
+    std::vector<json> v;
+    std::vector<std::string> w;
+    for (const auto& axis : axes) {
+      const auto it = obj.find(axis.key);
+      if (it == obj.end()) {
+        msg.fail(pointer_child(here, axis.key),
+                 "required key is missing (a point sets every grid axis: " + keys + ")");
+        ok = false;
+        continue;
+      }
+      v.push_back(*it);
+      w.push_back(pointer_child(here, axis.key));
+    }
+    if (!ok) continue;
+    const auto [it, fresh] = seen.emplace(canonical_json(v), values.size());
+    if (!fresh) {
+      const std::size_t other = it->second;
+      msg.fail(here, "repeats " + (other < values.size() && !where[other].empty() &&
+                                           where[other][0].rfind("/points/", 0) == 0
+                                       ? "/points/" + where[other][0].substr(
+                                                          8, where[other][0].find('/', 8) - 8)
+                                       : std::string("a point of /grid")));
+      continue;
+    }
+    values.push_back(std::move(v));
+    where.push_back(std::move(w));
+  }
+}
+
 // File name of a run: the grid values, the seed and the id, e.g.
 // runs/mu_s-0.5_rho-20_s3_0123456789ab.h5.
-std::string run_file_name(const std::vector<GridAxis>& axes, const std::vector<std::size_t>& at,
+std::string run_file_name(const std::vector<GridAxis>& axes, const std::vector<json>& values,
                           std::uint64_t seed, const std::string& id) {
   std::string readable;
   for (std::size_t a = 0; a < axes.size(); ++a) {
     if (!readable.empty()) readable += '_';
-    readable += sanitize(axes[a].label) + "-" + sanitize(value_text(axes[a].values[at[a]]));
+    readable += sanitize(axes[a].label) + "-" + sanitize(value_text(values[a]));
   }
   if (readable.size() > kMaxReadable) readable.resize(kMaxReadable);
   if (!readable.empty()) readable += '_';
@@ -348,34 +411,57 @@ Sweep parse_sweep(const json& j, const std::string& source) {
   }
 
   // Count before expanding, so a typo like 1e6 values fails fast.
-  std::size_t points = 1;
+  std::size_t grid_points = 1;
   bool too_many = false;
   for (const auto& a : sw.axes) {
-    if (points > kMaxRuns / a.values.size()) too_many = true;
-    points *= a.values.size();
+    if (grid_points > kMaxRuns / a.values.size()) too_many = true;
+    grid_points *= a.values.size();
   }
-  if (too_many || (!sw.seeds.empty() && points > kMaxRuns / sw.seeds.size()))
+  if (too_many || (!sw.seeds.empty() && grid_points > kMaxRuns / sw.seeds.size()))
     msg.fail("/grid", "the grid times the seeds has more than " + std::to_string(kMaxRuns) +
                           " runs; split the sweep");
   if (!msg.empty() || !base_ok) throw InputError(msg.list());
 
-  // Expand: points in mixed radix over the sorted axes (the first axis slowest), the seeds
-  // innermost. Every (point, seed) goes through parse_scene; its messages are mapped onto the
-  // sweep file: a grid value's pointer -> /grid/<key>/<i>, anything else -> /base/... (with the
-  // point named when not every point has the problem).
+  // The points: the grid's in mixed radix over the sorted axes (the first axis slowest), then
+  // the listed ones (/points) in their order. where[p][a] is the pointer of the value in the
+  // sweep file, for messages.
+  std::vector<std::vector<json>> point_values;
+  std::vector<std::vector<std::string>> where;
+  for (std::size_t p = 0; p < grid_points; ++p) {
+    std::size_t rest = p;
+    std::vector<json> v(sw.axes.size());
+    std::vector<std::string> w(sw.axes.size());
+    for (std::size_t a = sw.axes.size(); a-- > 0;) {
+      const std::size_t i = rest % sw.axes[a].values.size();
+      rest /= sw.axes[a].values.size();
+      v[a] = sw.axes[a].values[i];
+      w[a] = pointer_child("/grid", sw.axes[a].key) + "/" + std::to_string(i);
+    }
+    point_values.push_back(std::move(v));
+    where.push_back(std::move(w));
+  }
+  if (const auto it = j.find("points"); it != j.end()) {
+    parse_points(*it, sw.axes, msg, point_values, where);
+    if (!sw.seeds.empty() && point_values.size() > kMaxRuns / sw.seeds.size())
+      msg.fail("/points", "the points times the seeds are more than " + std::to_string(kMaxRuns) +
+                              " runs; split the sweep");
+    if (!msg.empty()) throw InputError(msg.list());
+    for (std::size_t p = grid_points; p < point_values.size(); ++p)
+      sw.listed_points.push_back(point_values[p]);
+  }
+  const std::size_t points = point_values.size();
+
+  // Expand: every point, the seeds innermost. Every (point, seed) goes through parse_scene; its
+  // messages are mapped onto the sweep file: a point value's pointer -> /grid/<key>/<i> or
+  // /points/<k>/<key>, anything else -> /base/... (with the point named when not every point
+  // has the problem).
   const std::string marker = "\x01";   // parse_scene's source; messages start with "\x01: "
   std::vector<std::string> base_msgs;  // base problems in first-seen order ...
   std::map<std::string, std::pair<std::size_t, std::size_t>> base_seen;  // ... -> (count, first)
-  std::vector<std::size_t> at(sw.axes.size(), 0);
   for (std::size_t p = 0; p < points; ++p) {
-    std::size_t rest = p;
-    for (std::size_t a = sw.axes.size(); a-- > 0;) {
-      at[a] = rest % sw.axes[a].values.size();
-      rest /= sw.axes[a].values.size();
-    }
     json scene = sw.base;
     for (std::size_t a = 0; a < sw.axes.size(); ++a)
-      set_at(scene, sw.axes[a].pointer, sw.axes[a].values[at[a]]);
+      set_at(scene, sw.axes[a].pointer, point_values[p][a]);
     std::set<std::string> point_msgs;
     for (const std::uint64_t seed : sw.seeds) {
       scene["seed"] = seed;
@@ -393,7 +479,7 @@ Sweep parse_sweep(const json& j, const std::string& source) {
                   : std::as_const(s.resolved).at(json::json_pointer(axis.pointer));
         run.seed = seed;
         run.id = run_id(s.resolved);
-        run.file = run_file_name(sw.axes, at, seed, run.id);
+        run.file = run_file_name(sw.axes, point_values[p], seed, run.id);
         run.cost = expected_cost(s.engine);
         run.scene = std::move(s);
         sw.runs.push_back(std::move(run));
@@ -404,8 +490,7 @@ Sweep parse_sweep(const json& j, const std::string& source) {
           for (std::size_t a = 0; a < sw.axes.size() && !on_axis; ++a) {
             const std::string& ptr = sw.axes[a].pointer;
             if (rest.compare(0, ptr.size() + 2, ptr + ": ") == 0) {
-              msg.add(source + ": " + pointer_child("/grid", sw.axes[a].key) + "/" +
-                      std::to_string(at[a]) + rest.substr(ptr.size()));
+              msg.add(source + ": " + where[p][a] + rest.substr(ptr.size()));
               on_axis = true;
             }
           }
@@ -429,16 +514,10 @@ Sweep parse_sweep(const json& j, const std::string& source) {
       continue;
     }
     // Name the first grid point that has the problem.
-    std::string where;
-    std::size_t rest = first;
-    std::vector<std::string> parts(sw.axes.size());
-    for (std::size_t a = sw.axes.size(); a-- > 0;) {
-      const auto& axis = sw.axes[a];
-      parts[a] = axis.key + " = " + value_text(axis.values[rest % axis.values.size()]);
-      rest /= axis.values.size();
-    }
-    for (const auto& part : parts) where += (where.empty() ? "" : ", ") + part;
-    msg.add(text + " (at grid point " + where +
+    std::string at;
+    for (std::size_t a = 0; a < sw.axes.size(); ++a)
+      at += (at.empty() ? "" : ", ") + sw.axes[a].key + " = " + value_text(point_values[first][a]);
+    msg.add(text + " (at grid point " + at +
             (count > 1 ? " and " + std::to_string(count - 1) + " more" : "") + ")");
   }
   if (!msg.empty()) throw InputError(msg.list());
@@ -450,6 +529,15 @@ Sweep parse_sweep(const json& j, const std::string& source) {
                  {"grid", grid},
                  {"seeds", sw.seeds},
                  {"analysis", sw.analysis}};
+  if (!sw.listed_points.empty()) {
+    json list = json::array();
+    for (const auto& v : sw.listed_points) {
+      json point = json::object();
+      for (std::size_t a = 0; a < sw.axes.size(); ++a) point[sw.axes[a].key] = v[a];
+      list.push_back(point);
+    }
+    sw.resolved["points"] = list;
+  }
   return sw;
 }
 

@@ -1,8 +1,9 @@
 #pragma once
 // Sweep file (DESIGN §5): {"name", "base": {scene}, "grid": {"<key or JSON pointer>": [values]},
-// "seeds": 10 | [list], "analysis": {...}}. The grid is the Cartesian product of its axes times
-// the seeds; every (point, seed) is one scene validated by parse_scene, errors reported against
-// the sweep file's own pointers (`sweep.json: /grid/mu_s/2: must be >= 0`).
+// "points": [{"<key>": value, ...}], "seeds": 10 | [list], "analysis": {...}}. The points are
+// the Cartesian product of the grid's axes, then the listed points (each sets every axis); each
+// point runs with every seed; every (point, seed) is one scene validated by parse_scene, errors
+// reported against the sweep file's own pointers (`sweep.json: /grid/mu_s/2: must be >= 0`).
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -26,7 +27,8 @@ struct GridAxis {
 // One simulation of the sweep: a grid point and a seed.
 struct SweepRun {
   std::size_t index = 0;  // position in the deterministic run order (points major, seeds minor)
-  std::size_t point = 0;  // grid point (mixed radix over the axes, the first axis slowest)
+  std::size_t point = 0;  // grid point (mixed radix over the axes, the first axis slowest;
+                          // listed points follow the grid's)
   nlohmann::json point_values;  // {axis key: resolved value}, e.g. {"mu_s": 0.5, "rho": 20.0}
   std::uint64_t seed = 0;
   Scene scene;       // validated, seed set; scene.resolved is the run's identity
@@ -39,9 +41,13 @@ struct Sweep {
   std::string name;
   nlohmann::json base;         // the base scene as given (not resolved: the grid may complete it)
   std::vector<GridAxis> axes;  // sorted by pointer, so the order is independent of the file
+  // Listed points ("points": [{"<axis key>": value, ...}]) after the grid's, one value per axis
+  // in `axes` order; `wirepack refine` adds its grid values here.
+  std::vector<std::vector<nlohmann::json>> listed_points;
   std::vector<std::uint64_t> seeds;
   nlohmann::json analysis;     // free-form settings for the analysis stage (an object)
-  nlohmann::json resolved;     // {"name", "base", "grid", "seeds" (as a list), "analysis"}
+  nlohmann::json resolved;     // {"name", "base", "grid", ["points",] "seeds" (as a list),
+                               // "analysis"}; "points" only when there are listed points
   std::vector<SweepRun> runs;  // in run order: index i = point * seeds.size() + seed position
 
   std::size_t points() const { return seeds.empty() ? 0 : runs.size() / seeds.size(); }

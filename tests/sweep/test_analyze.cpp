@@ -390,8 +390,19 @@ TEST_F(Analyze, FullRunWritesEveryFileWithOneHeaderRowDeterministically) {
   o.gnuplot = "gnuplot-that-does-not-exist";
   const AnalyzeResult r = analyze(o);
   const std::vector<std::string> names = {"runs.csv",      "curves.csv", "D_vs_mu_s.csv",
-                                          "exponents.csv", "series.csv", "distributions.csv"};
+                                          "exponents.csv", "series.csv", "distributions.csv",
+                                          "critical.csv"};
   ASSERT_EQ(r.csv.size(), names.size());
+  // Two values of mu_s: a row that says so, no number that looks like a result.
+  const Csv crit = read_csv(out("critical.csv"));
+  ASSERT_EQ(crit.rows.size(), 1u);
+  EXPECT_EQ(crit.rows[0].at("axis"), "mu_s");
+  EXPECT_EQ(crit.rows[0].at("status"), "too few points");
+  EXPECT_EQ(crit.rows[0].at("x_c"), "nan");
+  EXPECT_EQ(crit.rows[0].at("points"), "2");
+  EXPECT_EQ(crit.rows[0].at("values"), "5");
+  EXPECT_EQ(crit.rows[0].at("n_failed"), "1");
+  EXPECT_FALSE(fs::exists(out("phase_diagram.csv")));
   std::map<std::string, std::string> first;
   for (std::size_t i = 0; i < names.size(); ++i) {
     EXPECT_EQ(r.csv[i], out(names[i]));
@@ -455,6 +466,12 @@ TEST_F(Analyze, BadInputIsAnInputErrorAndWritesNothing) {
   bad = {};
   bad.at_l = -1;
   EXPECT_NE(message(bad).find("--at-l"), std::string::npos);
+  for (const std::string text : {"mu_s=0.6,0", "mu_d=0,1", "mu_s", "mu_s=0,x"}) {
+    bad = {};
+    bad.critical_ranges = {text};
+    EXPECT_NE(message(bad).find("--critical-range: must be NAME=X_MIN,X_MAX"), std::string::npos)
+        << text;
+  }
   EXPECT_FALSE(fs::exists(dir_ / "analysis"));
 
   // A bad window in the sweep's analysis block names the manifest and the key.
@@ -470,7 +487,7 @@ TEST_F(Analyze, BadInputIsAnInputErrorAndWritesNothing) {
     EXPECT_EQ(e.messages()[0], other / "manifest.json" +
                                    ": /sweep/analysis/bins: unknown key; valid keys: D_window, "
                                    "fit_window, fit_windows, distribution_l, histogram_bins, "
-                                   "bootstrap_resamples");
+                                   "bootstrap_resamples, critical_ranges");
     EXPECT_EQ(e.messages()[1], other / "manifest.json" +
                                    ": /sweep/analysis/D_window: must be [l_min, l_max] with 0 <= "
                                    "l_min < l_max (got [50,5])");
@@ -497,6 +514,24 @@ TEST(AnalysisBlock, DefaultsAndEveryKey) {
   EXPECT_THROW(
       apply_analysis_block(json::parse(R"({"fit_windows": {"tau": [5]}})"), "s.json", "", s),
       InputError);
+  apply_analysis_block(json::parse(R"({"critical_ranges": {"mu_s": [0, 0.6], "eps": [10, 1e4]}})"),
+                       "s.json", "/analysis", s);
+  EXPECT_EQ(s.critical_ranges.at("/mu_s"), (std::pair<double, double>{0, 0.6}));
+  EXPECT_EQ(s.critical_ranges.at("/eps").second, 1e4);
+  try {
+    apply_analysis_block(
+        json::parse(R"({"critical_ranges": {"mu_d": [0, 1], "rho": [20, 10], "xi": 3}})"), "s.json",
+        "/analysis", s);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    ASSERT_EQ(e.messages().size(), 3u);
+    EXPECT_EQ(e.messages()[0],
+              "s.json: /analysis/critical_ranges/mu_d: not a transition parameter; valid: mu_s, "
+              "eps, xi, rho");
+    EXPECT_EQ(e.messages()[1],
+              "s.json: /analysis/critical_ranges/rho: must be [x_min, x_max] with x_min < x_max "
+              "(got [20,10])");
+  }
 }
 
 }  // namespace

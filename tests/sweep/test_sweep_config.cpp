@@ -339,3 +339,56 @@ TEST(SweepConfig, PresetAxisAndNumericsKeysOverAPresetBase) {
 
 }  // namespace
 }  // namespace wirepack::sweep
+
+namespace wirepack::sweep {
+namespace {
+
+// Listed points (/points, what `wirepack refine` adds): after the grid's points, with the same
+// ids and file names as grid points of equal values would have.
+TEST(SweepConfig, ListedPointsFollowTheGrid) {
+  const Sweep sw = parse_text(R"({
+    "name": "t", "base": {"shell": "rigid", "l_max": 1, "numerics": {"element_length": 1e-3}},
+    "grid": {"mu_s": [0, 1], "rho": [8]},
+    "points": [{"mu_s": 0.25, "rho": 8}, {"rho": 10, "mu_s": 0.5}],
+    "seeds": 2})");
+  ASSERT_EQ(sw.points(), 4u);
+  ASSERT_EQ(sw.runs.size(), 8u);
+  EXPECT_EQ(sw.runs[4].point, 2u);
+  EXPECT_EQ(sw.runs[4].point_values, (json{{"mu_s", 0.25}, {"rho", 8.0}}));
+  EXPECT_EQ(sw.runs[7].point_values, (json{{"mu_s", 0.5}, {"rho", 10.0}}));
+  EXPECT_EQ(sw.runs[7].seed, 2u);
+  EXPECT_EQ(sw.runs[4].file, "runs/mu_s-0.25_rho-8_s1_" + sw.runs[4].id.substr(0, 12) + ".h5");
+  ASSERT_EQ(sw.listed_points.size(), 2u);
+  EXPECT_EQ(sw.resolved["points"], json::parse(R"([{"mu_s": 0.25, "rho": 8}, {"mu_s": 0.5,
+    "rho": 10}])"));
+  // The resolved sweep parses to the same runs (the manifest keeps it).
+  const Sweep again = parse_sweep(sw.resolved, "manifest");
+  ASSERT_EQ(again.runs.size(), sw.runs.size());
+  for (std::size_t i = 0; i < sw.runs.size(); ++i) EXPECT_EQ(again.runs[i].id, sw.runs[i].id);
+  // The same point on the grid has the same id.
+  const Sweep grid = parse_text(R"({
+    "name": "t", "base": {"shell": "rigid", "l_max": 1, "numerics": {"element_length": 1e-3}},
+    "grid": {"mu_s": [0.25], "rho": [8]}, "seeds": 2})");
+  EXPECT_EQ(grid.runs[0].file, sw.runs[4].file);
+  // Without listed points the resolved sweep has no "points" key (manifests unchanged).
+  EXPECT_FALSE(grid.resolved.contains("points"));
+}
+
+TEST(SweepConfig, InvalidListedPointsNameThePointer) {
+  const std::string head = R"({"name": "t", "base": {"shell": "rigid", "l_max": 1},
+    "grid": {"mu_s": [0, 1]}, "seeds": 1, "points": )";
+  auto e = errors_of(head + R"({"mu_s": 0.5}})");
+  EXPECT_TRUE(has_message(e, "sweep.json: /points: must be a list")) << joined(e);
+  e = errors_of(head + R"([{"mu_s": 1}]})");
+  EXPECT_TRUE(has_message(e, "sweep.json: /points/0: repeats a point of /grid")) << joined(e);
+  e = errors_of(head + R"([{"mu_s": 0.5}, {"mu_s": 0.5}]})");
+  EXPECT_TRUE(has_message(e, "sweep.json: /points/1: repeats /points/0")) << joined(e);
+  e = errors_of(head + R"([{"rho": 10}]})");
+  EXPECT_TRUE(has_message(e, "sweep.json: /points/0/rho: not a grid axis")) << joined(e);
+  EXPECT_TRUE(has_message(e, "sweep.json: /points/0/mu_s: required key is missing")) << joined(e);
+  e = errors_of(head + R"([{"mu_s": -1}]})");
+  EXPECT_TRUE(has_message(e, "sweep.json: /points/0/mu_s: must be >= 0")) << joined(e);
+}
+
+}  // namespace
+}  // namespace wirepack::sweep
