@@ -24,7 +24,7 @@ struct WireParams {
 struct NumericsParams {
   double element_length = 0.5e-3;   // rest length of a wire element [m]
   double shell_mesh_size = 1.0e-3;  // target shell triangle edge [m] (elastic shell only)
-  double quasistatic_ratio = 0.02;  // v / c_axial of the element-scale modes; mass scaling [-]
+  double quasistatic_ratio = 0.01;  // v / c_axial of the element-scale modes; mass scaling [-]
   MassScaling mass_scaling = MassScaling::Selective;
   double tolerance = 1e-3;      // local position error per step, in units of r [-]
   double damping_ratio = 0.05;  // subcritical damping ratio zeta [-]

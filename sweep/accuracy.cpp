@@ -44,7 +44,7 @@ struct Run {
 };
 
 std::string num(double x) {
-  return std::isnan(x) ? "nan" : format_number(x);
+  return csv_number(x);
 }
 
 std::vector<double> column(const RunRecord& rec, const std::string& name, std::size_t rows) {

@@ -211,18 +211,11 @@ namespace {
 // ---------------------------------------------------------------------------------------------
 // Small helpers: CSV cells and tables, JSON leaves.
 
-// A number as CSV: shortest round-trip text, "nan" for any NaN.
 std::string num(double x) {
-  return std::isnan(x) ? "nan" : format_number(x);
+  return csv_number(x);
 }
-
-// A parameter value as CSV: numbers as numbers, strings quoted where needed, absent empty.
 std::string cell(const json& v) {
-  if (v.is_null()) return "";
-  if (v.is_number()) return num(v.get<double>());
-  if (v.is_string()) return csv_field(v.get<std::string>());
-  if (v.is_boolean()) return v.get<bool>() ? "true" : "false";
-  return csv_field(v.dump());
+  return csv_cell(v);
 }
 
 // A value as text for plot titles ("0.5", "rigid").
@@ -436,20 +429,6 @@ struct Directory {
   std::vector<Run> runs;       // every expected or found run, by file name
 };
 
-// The manifest of an unsharded sweep, else the first shard's (all carry the same sweep).
-std::string find_manifest(const fs::path& dir) {
-  std::error_code ec;
-  if (fs::is_regular_file(dir / "manifest.json", ec)) return (dir / "manifest.json").string();
-  std::vector<std::string> shards;
-  for (const auto& e : fs::directory_iterator(dir, ec)) {
-    const std::string name = e.path().filename().string();
-    if (name.rfind("manifest.shard-", 0) == 0 && name.size() > 5 &&
-        name.compare(name.size() - 5, 5, ".json") == 0)
-      shards.push_back(e.path().string());
-  }
-  std::sort(shards.begin(), shards.end());
-  return shards.empty() ? "" : shards.front();
-}
 
 // Opens DIR: its manifest (whose analysis block is applied to `settings`) and the list of runs,
 // expected or found, by file name; nothing is read from the run files yet.
@@ -461,7 +440,7 @@ Directory open_directory(const std::string& dir_text, AnalysisSettings& settings
                      (fs::exists(dir, ec) ? "not a directory" : "no such directory") +
                      " (give the directory written by `wirepack sweep`)");
   Directory d;
-  d.manifest = find_manifest(dir);
+  d.manifest = find_manifest(dir.string());
   if (!d.manifest.empty()) {
     const json m = load_json_file(d.manifest);
     if (!m.is_object() || !m.contains("sweep"))

@@ -17,14 +17,10 @@ using analysis::NaN;
 namespace {
 
 std::string num(double x) {
-  return std::isnan(x) ? "nan" : format_number(x);
+  return csv_number(x);
 }
-
 std::string cell(const json& v) {
-  if (v.is_null()) return "";
-  if (v.is_number()) return num(v.get<double>());
-  if (v.is_string()) return csv_field(v.get<std::string>());
-  return csv_field(v.dump());
+  return csv_cell(v);
 }
 
 // "/mu_s" -> "mu_s", "/numerics/element_length" -> "numerics.element_length" (as analyze).

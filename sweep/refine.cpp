@@ -28,26 +28,13 @@ namespace {
 constexpr int kDefaultPointsPerRound = 4;
 constexpr int kUntilCiRounds = 10;  // rounds allowed by --until-ci without --budget
 
-// The manifest of an unsharded sweep, else the first shard's ("" none).
-std::string find_manifest(const fs::path& dir) {
-  std::error_code ec;
-  if (fs::is_regular_file(dir / "manifest.json", ec)) return (dir / "manifest.json").string();
-  std::vector<std::string> shards;
-  for (const auto& e : fs::directory_iterator(dir, ec)) {
-    const std::string name = e.path().filename().string();
-    if (name.rfind("manifest.shard-", 0) == 0 && name.ends_with(".json"))
-      shards.push_back(e.path().string());
-  }
-  std::sort(shards.begin(), shards.end());
-  return shards.empty() ? "" : shards.front();
-}
 
 // The sweep of DIR: refine.json (written by an earlier refine) or the manifest's.
 Sweep load_current(const fs::path& dir) {
   std::error_code ec;
   const fs::path refined = dir / "refine.json";
   if (fs::is_regular_file(refined, ec)) return load_sweep(refined.string());
-  const std::string manifest = find_manifest(dir);
+  const std::string manifest = find_manifest(dir.string());
   if (manifest.empty())
     throw InputError(dir.string() +
                      ": no manifest.json and no refine.json: not a sweep directory (run "

@@ -138,7 +138,7 @@ const std::vector<KeySpec>& scene_schema() {
       {.pointer = "/numerics/quasistatic_ratio",
        .type = Type::Number,
        .need = Need::Optional,
-       .default_text = "preset: 0.02",
+       .default_text = "preset: 0.01",
        .min = Bound{0, false},
        .max = Bound{0.5, true},
        .doc = "injection speed over the axial wave speed of the element-scale modes; sets "
@@ -219,7 +219,7 @@ const std::vector<NumericsPreset>& numerics_presets() {
   // Chosen from the accuracy-vs-time study (results/accuracy, README "Presets").
   static const std::vector<NumericsPreset> table = {
       {"fast", 2.0, 4.0, 0.02, 1e-3, "quick looks and broad scans"},
-      {"default", 1.0, 2.0, 0.02, 1e-3, "production nights"},
+      {"default", 1.0, 2.0, 0.01, 1e-3, "production nights"},
       {"accurate", 0.5, 1.0, 0.003, 3e-5, "convergence checks and references"},
   };
   return table;

@@ -5,7 +5,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <charconv>
 #include <cstdio>
 #include <cstdlib>
@@ -160,6 +162,33 @@ void write_file_atomic(const std::string& path, const std::string& text) {
     ::unlink(tmp.c_str());
     throw std::runtime_error("cannot rename " + tmp + " to " + path + ": " + std::strerror(e));
   }
+}
+
+std::string csv_number(double x) {
+  return std::isnan(x) ? "nan" : format_number(x);
+}
+
+std::string csv_cell(const nlohmann::json& v) {
+  if (v.is_null()) return "";
+  if (v.is_number()) return csv_number(v.get<double>());
+  if (v.is_string()) return csv_field(v.get<std::string>());
+  if (v.is_boolean()) return v.get<bool>() ? "true" : "false";
+  return csv_field(v.dump());
+}
+
+std::string find_manifest(const std::string& dir_text) {
+  namespace fs = std::filesystem;
+  const fs::path dir(dir_text);
+  std::error_code ec;
+  if (fs::is_regular_file(dir / "manifest.json", ec)) return (dir / "manifest.json").string();
+  std::vector<std::string> shards;
+  for (const auto& e : fs::directory_iterator(dir, ec)) {
+    const std::string name = e.path().filename().string();
+    if (name.rfind("manifest.shard-", 0) == 0 && name.ends_with(".json"))
+      shards.push_back(e.path().string());
+  }
+  std::sort(shards.begin(), shards.end());
+  return shards.empty() ? "" : shards.front();
 }
 
 std::string csv_field(const std::string& s) {

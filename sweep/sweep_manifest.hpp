@@ -112,5 +112,13 @@ class DirLock {
 
 // CSV field: quoted when it holds a comma, quote or newline (quotes doubled, newlines -> space).
 std::string csv_field(const std::string& s);
+// A number as CSV: shortest round-trip text, "nan" for any NaN.
+std::string csv_number(double x);
+// A parameter value as CSV: numbers as numbers, strings quoted where needed, null empty.
+std::string csv_cell(const nlohmann::json& v);
+
+// The manifest of a sweep directory: DIR/manifest.json, else the first shard's
+// DIR/manifest.shard-K-of-N.json (each holds the whole sweep); "" when there is none.
+std::string find_manifest(const std::string& dir);
 
 }  // namespace wirepack::sweep

@@ -36,7 +36,7 @@ stats() {  # stats LABEL MU CSV-TEXT
   echo "numerics,mu_s,l_min,l_max,E_kin_over_U_b_mean,E_kin_over_U_b_max"
   for mu in 0 0.5; do
     git show 57ad176:results/elastic/elastic_mu$mu.csv | stats uniform_q0.01 $mu
-    stats selective_q0.02 $mu < results/elastic/elastic_mu$mu.csv
+    stats selective_q0.01 $mu < results/elastic/elastic_mu$mu.csv
   done
 } > $out/kinetic.csv.tmp
 mv $out/kinetic.csv.tmp $out/kinetic.csv

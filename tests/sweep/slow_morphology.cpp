@@ -4,10 +4,11 @@
 // chord's contribution at l ~ 5). At mu_s = 0 the wire coils (D stays small), at mu_s = 0.5 it
 // bifurcates from the coil (l ~ 7) and loops reorient (D large at times). Guards the physics
 // that decides the phase (damping, inertia). Under the quasi-static numerics (selective mass)
-// the crumpling run alternates between reoriented (D ~ 0.5-0.7) and re-coiled (D ~ 0.1)
+// the crumpling run alternates between reoriented (D ~ 0.3-0.5) and re-coiled (D ~ 0.1)
 // stretches up to l ~ 14, as the near-physical-inertia reference does, so a mean or minimum of
 // D over a short window no longer separates the phases; the maximum does. Measured (README
-// "Quasi-static regime"): max over [8, 14] 0.10 at mu_s = 0, 0.49-0.68 at mu_s = 0.5.
+// "Quasi-static regime"): max over [8, 14] 0.10 at mu_s = 0, 0.46 at mu_s = 0.5 (0.63 at the
+// fast preset's q = 0.02).
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -61,7 +61,7 @@ TEST(SceneConfig, DefaultsFilled) {
   EXPECT_EQ(s.engine.wire.density, 1140);
   EXPECT_EQ(s.engine.numerics.element_length, 0.5e-3);
   EXPECT_EQ(s.engine.numerics.shell_mesh_size, 1e-3);
-  EXPECT_EQ(s.engine.numerics.quasistatic_ratio, 0.02);
+  EXPECT_EQ(s.engine.numerics.quasistatic_ratio, 0.01);
   EXPECT_EQ(s.engine.numerics.tolerance, 1e-3);
   EXPECT_EQ(s.engine.numerics.damping_ratio, 0.05);
   EXPECT_EQ(s.engine.numerics.twist, EffectMode::Auto);

@@ -10,12 +10,10 @@
 #include <random>
 
 #include "engine/integrate/damping.hpp"
-#include "engine/integrate/predictor_corrector.hpp"
+#include "engine/integrate/free_rod.hpp"
 #include "engine/integrate/wire_mass.hpp"
-#include "engine/rod/bend.hpp"
 #include "engine/rod/material.hpp"
 #include "engine/rod/rod_state.hpp"
-#include "engine/rod/stretch.hpp"
 
 namespace wirepack {
 namespace {
@@ -216,99 +214,40 @@ TEST(BendingRateDashpot, DissipatesAndDampsTheZigZagAtItsRatio) {
   for (int i = 2; i < n - 2; ++i) EXPECT_NEAR(fz[i][1], -16.0 * eta * vz[i][1], 1e-12) << i;
 }
 
-// A free rod (no guide) under stretch and bend with the selective mass of the default scene,
-// bent into a gentle arc with noise and released at rest (as the lumped-mass test does).
-struct SelectiveRod {
-  RodMaterial mat = RodMaterial::from(WireParams{});
-  double ell = 0.5e-3;
-  WireMass mass;
-  StretchTerm stretch{mat.EA()};
-  BendTerm bend{mat.EI()};
-  RodDamping damping;
-  RodState s;
-  RodForces f;
-
-  SelectiveRod(int n, double zeta) : mass(make_mass()), damping(make_damping(zeta)) {
-    std::mt19937_64 rng(7);
-    std::normal_distribution<double> g(0.0, 1.0);
-    for (int i = 0; i < n; ++i) {
-      const double a = 0.02 * i;
-      s.x.push_back(Vec3(50 * ell * std::sin(a), 50 * ell * (1 - std::cos(a)), 0.0) +
-                    0.02 * ell * Vec3(g(rng), g(rng), g(rng)));
-    }
-    s.v.assign(n, Vec3::Zero());
-    s.rest_length.assign(n - 1, ell);
-    s.n_free = n;
-    mass.factorise(n, false);
-  }
-  WireMass make_mass() const {
-    const double m_p = 1140.0 * mat.A * ell, m_s = 1.6e6 * mat.A * ell;  // q = 0.02
-    return WireMass(m_p, 0.25 * (m_s - m_p));
-  }
-  DampingParams make_damping(double zeta) const {
-    DampingParams d;
-    const WireMass m = make_mass();
-    d.eta_axial = zeta * std::sqrt(2.0 * mat.EA() / ell * m.mode_mass());
-    const double omega_zz = std::sqrt(16.0 * mat.EI() / (ell * ell * ell * m.mode_mass()));
-    d.eta_bending = 2.0 * zeta * omega_zz * m.mode_mass() / 16.0;
-    return d;
-  }
-  double evaluate(RodState& st, Vec3List& a, std::vector<double>& alpha, Vec3List&) {
-    f.reset(st);
-    stretch.accumulate(st, f);
-    bend.accumulate(st, f);
-    damping.add_forces(st, f);
-    mass.solve(f.f, a);
-    alpha.clear();
-    const RodInertia in{mass.mode_mass(), 0.0};
-    return stretch.omega_max_sq(in) + bend.omega_max_sq(in);
-  }
-  double total_energy() {
-    return mass.kinetic_energy(s.v, s.n_free) + stretch.energy(s) + bend.energy(s);
-  }
-};
-
-double run_selective_rod(SelectiveRod& rod, StepControl c, int steps, bool monotone,
-                         int* increases) {
-  PredictorCorrector pc(c, rod.mat.r);
-  auto eval = [&](RodState& s, Vec3List& a, std::vector<double>& al, Vec3List& sa) {
-    return rod.evaluate(s, a, al, sa);
-  };
-  auto moved = [](RodState&) {};
-  pc.initialise(rod.s, eval, moved);
-  const double E0 = rod.total_energy();
-  double worst = 0.0, prev = E0;
-  for (int k = 1; k <= steps; ++k) {
-    pc.step(rod.s, eval, moved);
-    if (k % 1000 == 0) {
-      const double E = rod.total_energy();
-      worst = std::max(worst, std::abs(E - E0) / E0);
-      if (monotone && E > prev * (1 + 1e-9) && prev > 1e-3 * E0) ++*increases;
-      prev = E;
-    }
-  }
-  return monotone ? prev / E0 : worst;
+// The free rod of free_rod.hpp with the selective mass of the default scene (q = 0.02) and the
+// dashpots of the selective model at ratio zeta (axial and bending rate).
+rigs::FreeRod selective_rod(double zeta) {
+  const RodMaterial mat = RodMaterial::from(WireParams{});
+  const double ell = 0.5e-3;
+  const double m_p = 1140.0 * mat.A * ell, m_s = 1.6e6 * mat.A * ell;
+  const WireMass M(m_p, 0.25 * (m_s - m_p));
+  DampingParams d;
+  d.eta_axial = zeta * std::sqrt(2.0 * mat.EA() / ell * M.mode_mass());
+  const double omega_zz = std::sqrt(16.0 * mat.EI() / (ell * ell * ell * M.mode_mass()));
+  d.eta_bending = 2.0 * zeta * omega_zz * M.mode_mass() / 16.0;
+  return rigs::FreeRod(40, M, d);
 }
 
 TEST(WireMass, PredictorCorrectorConservesEnergyWithoutDamping) {
-  SelectiveRod rod(40, 0.0);
+  rigs::FreeRod rod = selective_rod(0.0);
   StepControl c;
   c.tolerance = 1e-4 * rod.mat.r;
   c.dt_floor = 1e-15;
-  const double worst = run_selective_rod(rod, c, 100000, false, nullptr);
+  const double worst = rod.run(c, 100000);
   std::printf("  relative energy drift over 1e5 steps (selective mass): %.3e\n", worst);
   // The bound of the lumped-mass test (test_predictor_corrector.cpp): 2 %.
   EXPECT_LT(worst, 2e-2);
 }
 
 TEST(WireMass, DampedRodLosesEnergyMonotonically) {
-  SelectiveRod rod(40, 0.5);
+  rigs::FreeRod rod = selective_rod(0.5);
   StepControl c;
   c.tolerance = 1e-4 * rod.mat.r;
   c.damping_ratio = 0.5;
   c.dt_floor = 1e-15;
   int increases = 0;
-  const double left = run_selective_rod(rod, c, 40000, true, &increases);
+  double left = 1.0;
+  rod.run(c, 40000, &increases, &left);
   std::printf("  energy after 4e4 damped steps: %.3e of the initial\n", left);
   EXPECT_EQ(increases, 0);
   EXPECT_LT(left, 0.5);
