@@ -429,7 +429,6 @@ struct Directory {
   std::vector<Run> runs;       // every expected or found run, by file name
 };
 
-
 // Opens DIR: its manifest (whose analysis block is applied to `settings`) and the list of runs,
 // expected or found, by file name; nothing is read from the run files yet.
 Directory open_directory(const std::string& dir_text, AnalysisSettings& settings) {

@@ -28,7 +28,6 @@ namespace {
 constexpr int kDefaultPointsPerRound = 4;
 constexpr int kUntilCiRounds = 10;  // rounds allowed by --until-ci without --budget
 
-
 // The sweep of DIR: refine.json (written by an earlier refine) or the manifest's.
 Sweep load_current(const fs::path& dir) {
   std::error_code ec;
