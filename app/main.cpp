@@ -52,7 +52,14 @@ int cmd_run(const std::string& scene_path, const std::string& out) {
                           ? parse_scene(default_scene_json(), "<embedded default scene>")
                           : load_scene(scene_path);
   check_output_path(out);
-  const RunOutcome outcome = run_scene(scene, out, &std::cerr);
+  RunOutcome outcome;
+  try {
+    outcome = run_scene(scene, out, &std::cerr);
+  } catch (const RunFileError& e) {
+    // The simulation ended but its file could not be written (a full disk, a size limit).
+    std::cerr << "wirepack: run file not written: " << e.what() << '\n';
+    return kRunFailed;
+  }
   if (outcome.status != RunStatus::Complete) {
     std::cerr << "wirepack: run failed: " << outcome.failure << " (run file " << out << ")\n";
     return kRunFailed;
