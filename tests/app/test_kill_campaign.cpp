@@ -42,7 +42,7 @@ using wirepack::testing::read_text;
 using wirepack::testing::TempDir;
 
 constexpr int kKills = 24;   // at least this many SIGKILLs in all
-constexpr int kRounds = 12;  // at most this many rounds (fresh directories)
+constexpr int kRounds = 40;  // at most this many rounds (fresh directories; ~3 kills each)
 
 // Eight runs of a few tenths of a second: rigid, fast numerics, with and without friction.
 const char* kSweep = R"({"name": "kill", "base": {"rho": 10, "shell": "rigid", "l_max": 8,
