@@ -400,7 +400,9 @@ TEST(ShellSelfContact, RestSphereFeelsNothing) {
                 std::chrono::duration<double, std::milli>(t3 - t2).count());
     EXPECT_EQ(U, 0.0);
     EXPECT_EQ(term.rebuilds(), builds + 1);
+#ifndef __SANITIZE_ADDRESS__  // instrumented code (scripts/test_sanitize.sh) is several x slower
     EXPECT_LT(ns, 20000.0);
+#endif
   }
 }
 
