@@ -53,13 +53,27 @@ int cmd_run(const std::string& scene_path, const std::string& out) {
                           ? parse_scene(default_scene_json(), "<embedded default scene>")
                           : load_scene(scene_path);
   check_output_path(out);
-  const RunOutcome outcome = run_scene(scene, out, &std::cerr);
+  RunOutcome outcome;
+  try {
+    outcome = run_scene(scene, out, &std::cerr);
+  } catch (const RunFileError& e) {
+    // The simulation ended but its file could not be written (a full disk, a size limit).
+    std::cerr << "wirepack: run file not written: " << e.what() << '\n';
+    return kRunFailed;
+  }
   if (outcome.status != RunStatus::Complete) {
     std::cerr << "wirepack: run failed: " << outcome.failure << " (run file " << out << ")\n";
     return kRunFailed;
   }
   std::cout << out << '\n';
   return kOk;
+}
+
+// The sweep's analysis block is checked with the sweep (exit 2 before any run), not first by
+// `wirepack analyze` after a night of runs.
+void check_analysis_block(const Sweep& sweep, const std::string& source) {
+  AnalysisSettings settings = default_analysis_settings();
+  apply_analysis_block(sweep.analysis, source, "/analysis", settings);
 }
 
 // A scene prints resolved (every default filled); a sweep (an object with "grid") prints
@@ -77,6 +91,7 @@ int cmd_validate(const std::string& path) {
     return kOk;
   }
   const Sweep sweep = load_sweep(path);
+  check_analysis_block(sweep, path);
   nlohmann::json runs = nlohmann::json::array();
   for (const auto& r : sweep.runs)
     runs.push_back({{"index", r.index},
@@ -101,6 +116,7 @@ struct SweepArgs {
 int cmd_sweep(const SweepArgs& a) {
   const Sweep sweep = a.path.empty() ? parse_sweep(default_sweep_json(), "<embedded default sweep>")
                                      : load_sweep(a.path);
+  check_analysis_block(sweep, a.path.empty() ? "<embedded default sweep>" : a.path);
   const Shard shard =
       a.shard.empty() ? shard_from_env().value_or(Shard{}) : parse_shard(a.shard, "--shard");
   SweepOptions opt;

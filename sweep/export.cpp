@@ -68,10 +68,23 @@ std::string relative_run_path(const std::string& run_file, const std::string& xm
   return (rel.empty() ? run : rel).generic_string();
 }
 
+// Reads a run file to export; a `.part` (a run killed or still being written) is refused even
+// when it happens to be readable: only a renamed file is known to be whole.
+RunRecord read_for_export(const std::string& run_file) {
+  const std::string part = ".part";
+  if (run_file.size() >= part.size() &&
+      run_file.compare(run_file.size() - part.size(), part.size(), part) == 0)
+    throw RunFileError(run_file +
+                       ": a partial run file (its run was killed or is still being written); "
+                       "export the finished " +
+                       run_file.substr(0, run_file.size() - part.size()));
+  return read_run_file(run_file);
+}
+
 }  // namespace
 
 void export_csv(const std::string& run_file, const std::string& csv_path) {
-  const RunRecord r = read_run_file(run_file);
+  const RunRecord r = read_for_export(run_file);
   std::ostringstream out;
   std::size_t rows = 0;
   for (std::size_t c = 0; c < r.series.size(); ++c) {
@@ -90,7 +103,7 @@ void export_csv(const std::string& run_file, const std::string& csv_path) {
 }
 
 void export_xdmf(const std::string& run_file, const std::string& xmf_path) {
-  const RunRecord r = read_run_file(run_file);
+  const RunRecord r = read_for_export(run_file);
   const std::string h5 = xml_escape(relative_run_path(run_file, xmf_path));
   std::ostringstream x;
   x << "<?xml version=\"1.0\" ?>\n"

@@ -1,7 +1,14 @@
 #include "sweep/run_file.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
+#include <optional>
 #include <string_view>
 
 #include <hdf5.h>
@@ -174,8 +181,13 @@ Handle write_dataset(hid_t loc, const std::string& name, hid_t file_type, hid_t 
   return set;
 }
 
-void write_record(const RunRecord& r, const std::string& file_name) {
-  Handle file(H5Fcreate(file_name.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose,
+// Builds the run file in memory (HDF5's core driver, no backing store) and returns its bytes.
+// HDF5 never touches the disk, so a full disk or a file-size limit cannot leave it with a
+// half-closed file (which made the library crash at exit) and every I/O error is ours to report.
+std::vector<char> build_image(const RunRecord& r, const std::string& file_name) {
+  Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "create file access property list");
+  check(H5Pset_fapl_core(fapl.get(), 1 << 20, 0), "select HDF5's in-memory driver");
+  Handle file(H5Fcreate(file_name.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get()), H5Fclose,
               "create " + file_name);
   {
     Handle root(H5Gopen2(file.get(), "/", H5P_DEFAULT), H5Gclose, "open /");
@@ -219,7 +231,34 @@ void write_record(const RunRecord& r, const std::string& file_name) {
       }
     }
   }
+  check(H5Fflush(file.get(), H5F_SCOPE_GLOBAL), "flush " + file_name);
+  const ssize_t size = H5Fget_file_image(file.get(), nullptr, 0);
+  if (size < 0) fail("size the image of " + file_name);
+  std::vector<char> image(static_cast<std::size_t>(size));
+  if (H5Fget_file_image(file.get(), image.data(), image.size()) != size)
+    fail("copy the image of " + file_name);
   file.close("close " + file_name);
+  return image;
+}
+
+// Writes `bytes` to `path` (created or truncated) and fsyncs it; on any error the file is
+// removed and RunFileError names the path and the system's reason ("No space left on device").
+void write_bytes(const std::string& path, const std::vector<char>& bytes) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) throw RunFileError("cannot create " + path + ": " + std::strerror(errno));
+  std::size_t done = 0;
+  int err = 0;
+  while (done < bytes.size() && err == 0) {
+    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno != EINTR) err = errno;
+    if (n > 0) done += static_cast<std::size_t>(n);
+  }
+  if (err == 0 && ::fsync(fd) != 0) err = errno;
+  if (::close(fd) != 0 && err == 0) err = errno;
+  if (err != 0) {
+    ::unlink(path.c_str());
+    throw RunFileError("cannot write " + path + ": " + std::strerror(err));
+  }
 }
 
 // ---- reading ----
@@ -314,6 +353,36 @@ std::vector<std::string> member_names(hid_t group) {
   return names;
 }
 
+// "MAJOR.MINOR.PATCH" (a suffix after the patch number is ignored), or nullopt.
+std::optional<std::array<unsigned long, 3>> parse_version(const std::string& v) {
+  std::array<unsigned long, 3> out{};
+  const char* p = v.c_str();
+  for (int i = 0; i < 3; ++i) {
+    if (i > 0) {
+      if (*p != '.') return std::nullopt;
+      ++p;
+    }
+    if (*p < '0' || *p > '9') return std::nullopt;
+    char* end = nullptr;
+    out[static_cast<std::size_t>(i)] = std::strtoul(p, &end, 10);
+    p = end;
+  }
+  return out;
+}
+
+// A file written by a newer wirepack may have another layout: refused with the versions named.
+// An empty version (hand-made files) is taken as this one's.
+void check_version(const std::string& version) {
+  if (version.empty()) return;
+  const auto file = parse_version(version);
+  if (!file) throw RunFileError("version attribute \"" + version + "\" is not a wirepack version");
+  const auto ours = parse_version(build_version());
+  if (ours && *file > *ours)
+    throw RunFileError("written by wirepack " + version + ", newer than this wirepack " +
+                       build_version() + " (its layout may differ; read it with wirepack " +
+                       version + " or later)");
+}
+
 RunRecord read_record(const std::string& path) {
   Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "open " + path);
   Handle root(H5Gopen2(file.get(), "/", H5P_DEFAULT), H5Gclose, "open /");
@@ -335,13 +404,25 @@ RunRecord read_record(const std::string& path) {
   r.git = opt("git");
   r.started = opt("started");
   r.finished = opt("finished");
+  check_version(r.version);
 
-  if (has_link(file.get(), "series")) {
+  // Every run file has /series (with at least l, all of one length) and /snapshots, even a
+  // run that failed at its first step; a file without them is not one wirepack wrote whole.
+  for (const char* group : {"series", "snapshots"})
+    if (!has_link(file.get(), group))
+      throw RunFileError(std::string("required group /") + group + " is missing");
+  {
     Handle g(H5Gopen2(file.get(), "series", H5P_DEFAULT), H5Gclose, "open /series");
     for (const auto& name : member_names(g.get()))
       r.series.push_back({name, read_dataset<double>(g.get(), name, H5T_NATIVE_DOUBLE, 0)});
+    if (!r.find_series("l")) throw RunFileError("required dataset /series/l is missing");
+    for (const auto& s : r.series)
+      if (s.values.size() != r.series.front().values.size())
+        throw RunFileError("dataset /series/" + s.name + " has " + std::to_string(s.values.size()) +
+                           " values, /series/" + r.series.front().name + " has " +
+                           std::to_string(r.series.front().values.size()));
   }
-  if (has_link(file.get(), "snapshots")) {
+  {
     Handle g(H5Gopen2(file.get(), "snapshots", H5P_DEFAULT), H5Gclose, "open /snapshots");
     auto names = member_names(g.get());
     // Snapshot k is group "k": order numerically whatever the index order was.
@@ -372,16 +453,12 @@ RunRecord read_record(const std::string& path) {
 void write_run_file(const RunRecord& record, const std::string& path) {
   namespace fs = std::filesystem;
   const std::string part = path + ".part";
+  std::vector<char> image;
   {
     Hdf5Lock lock;
-    try {
-      write_record(record, part);
-    } catch (...) {
-      std::error_code ec;
-      fs::remove(part, ec);
-      throw;
-    }
+    image = build_image(record, part);
   }
+  write_bytes(part, image);  // removes the .part itself on failure
   std::error_code ec;
   fs::rename(part, path, ec);
   if (ec) {

@@ -61,10 +61,15 @@ std::string build_git();
 // several threads at once). write_run_file and read_run_file take it themselves.
 std::mutex& hdf5_mutex();
 
-// Writes `path + ".part"`, closes it and renames it to `path`. On failure the .part file is
-// removed and RunFileError is thrown; an existing `path` is then left untouched.
+// Builds the file in memory, writes it to `path + ".part"` (one write, fsync) and renames that
+// to `path`. On failure (a full disk: "No space left on device", a file-size limit: "File too
+// large") the .part file is removed and RunFileError is thrown; an existing `path` is then left
+// untouched.
 void write_run_file(const RunRecord& record, const std::string& path);
-// Reads a run file written by write_run_file. Throws RunFileError.
+// Reads a run file written by write_run_file. Throws RunFileError, with the path and the
+// reason: not HDF5, truncated, written by a newer wirepack (attribute `version`), a required
+// part missing (attributes status and config, groups /series and /snapshots, /series/l) or
+// series of unequal lengths.
 RunRecord read_run_file(const std::string& path);
 
 }  // namespace wirepack::sweep

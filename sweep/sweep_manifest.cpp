@@ -206,12 +206,23 @@ std::string csv_field(const std::string& s) {
 }
 
 JobLog::JobLog(const std::string& path) : path_(path) {
-  fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
+  fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
   if (fd_ < 0) throw std::runtime_error("cannot open " + path + ": " + std::strerror(errno));
   struct stat st {};
-  if (::fstat(fd_, &st) == 0 && st.st_size == 0 &&
-      !write_all(fd_, "id,file,start,end,wall_s,status,reason,shard\n"))
-    throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
+  if (::fstat(fd_, &st) != 0) return;
+  // An empty file gets the header; one whose last line was cut short (a write that failed
+  // half-way, a full disk) gets its newline, so the next line starts a line of its own.
+  char last = '\n';
+  if (st.st_size > 0 && ::pread(fd_, &last, 1, st.st_size - 1) != 1) last = '\n';
+  const char* start = st.st_size == 0 ? "id,file,start,end,wall_s,status,reason,shard\n"
+                      : last != '\n'  ? "\n"
+                                      : "";
+  if (!write_all(fd_, start)) {
+    const int err = errno;
+    ::close(fd_);
+    fd_ = -1;
+    throw std::runtime_error("cannot write " + path + ": " + std::strerror(err));
+  }
 }
 
 JobLog::~JobLog() {

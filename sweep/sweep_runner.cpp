@@ -8,8 +8,10 @@
 #include <chrono>
 #include <condition_variable>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <mutex>
+#include <set>
 #include <thread>
 
 #include "sweep/errors.hpp"
@@ -150,6 +152,38 @@ bool inspect(SweepState& st, ManifestEntry& e, bool retry_failed, SweepOutcome& 
   return false;
 }
 
+// Removes the manifest temporaries (MANIFEST.tmp.<pid>) that killed invocations on this shard
+// left; the shard's lock is held, so none of them is being written. Returns how many.
+std::size_t remove_stale_temporaries(const std::string& dir, const Shard& shard) {
+  const std::string prefix = fs::path(manifest_path(dir, shard)).filename().string() + ".tmp.";
+  std::size_t n = 0;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(dir, ec)) {
+    const std::string name = e.path().filename().string();
+    std::error_code rm;
+    if (name.rfind(prefix, 0) == 0 && e.is_regular_file(rm) && fs::remove(e.path(), rm)) ++n;
+  }
+  return n;
+}
+
+// The run ids with a line in any joblog of DIR (every shard's: a run finished by a shard is
+// not missing from the unsharded joblog).
+std::set<std::string> joblog_ids(const std::string& dir) {
+  std::set<std::string> ids;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(dir, ec)) {
+    const std::string name = e.path().filename().string();
+    if (name.rfind("joblog", 0) != 0 || e.path().extension() != ".csv") continue;
+    std::ifstream in(e.path());
+    std::string line;
+    std::getline(in, line);  // header
+    while (std::getline(in, line))
+      if (const auto comma = line.find(','); comma != std::string::npos)
+        ids.insert(line.substr(0, comma));
+  }
+  return ids;
+}
+
 // One task: simulates a run and records it. Catches everything (an exception must not leave an
 // OpenMP task).
 void execute(SweepState& st, ManifestEntry& e, const SweepOptions& opt) noexcept {
@@ -234,6 +268,24 @@ SweepOutcome run_sweep(const Sweep& sweep, const SweepOptions& opt) {
   } catch (const std::exception& e) {
     st.warn(e.what());
   }
+  // A run killed between its rename and its joblog line is finished on disk but not in the
+  // joblog: its line is added now, from the run file's own times.
+  if (st.joblog) {
+    const std::set<std::string> logged = joblog_ids(opt.dir);
+    for (const auto& e : st.entries) {
+      if (e.status != EntryStatus::Complete && e.status != EntryStatus::Failed) continue;
+      if (logged.contains(e.run->id)) continue;
+      try {
+        st.joblog->append({e.run->id, e.run->file, e.started, e.finished, std::max(e.wall_s, 0.0),
+                           to_string(e.status), e.reason, opt.shard.text()});
+        ++out.joblog_added;
+      } catch (const std::exception& ex) {
+        st.warn(ex.what());
+        break;
+      }
+    }
+  }
+  out.temps_removed = remove_stale_temporaries(opt.dir, opt.shard);
   st.write_manifest();
 
   if (opt.progress) {
@@ -247,6 +299,11 @@ SweepOutcome run_sweep(const Sweep& sweep, const SweepOptions& opt) {
       line += ", " + std::to_string(failed_kept) + " failed before (kept; --retry-failed reruns)";
     if (out.parts_removed > 0)
       line += ", " + std::to_string(out.parts_removed) + " leftover .part file(s) removed";
+    if (out.temps_removed > 0)
+      line +=
+          ", " + std::to_string(out.temps_removed) + " leftover manifest temporary file(s) removed";
+    if (out.joblog_added > 0)
+      line += ", " + std::to_string(out.joblog_added) + " missing joblog line(s) added";
     if (todo.empty())
       line += "; nothing to run in " + opt.dir;
     else

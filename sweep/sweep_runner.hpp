@@ -28,6 +28,8 @@ struct SweepOutcome {
   std::size_t ran = 0;            // simulated by this invocation
   std::size_t found = 0;          // finished runs found on disk and kept
   std::size_t parts_removed = 0;  // .part leftovers of killed runs removed
+  std::size_t temps_removed = 0;  // manifest temporaries of killed invocations removed
+  std::size_t joblog_added = 0;   // joblog lines restored for runs finished on disk without one
   int threads = 0;                // threads used
   double wall_s = 0;              // [s]
   std::vector<std::pair<std::string, std::string>> failures;  // (file, reason), run order
@@ -41,7 +43,9 @@ void prepare_sweep_dir(const std::string& dir);
 // Runs the shard's runs that are not finished on disk (DESIGN §5):
 // - resume: a run whose final file exists and says "complete" is kept; "failed" is kept unless
 //   retry_failed; a `.part` leftover is removed and the run redone; a file that cannot be read
-//   or holds another config is redone.
+//   or holds another config is redone. Manifest temporaries a killed invocation left
+//   (MANIFEST.tmp.<pid>) are removed; a finished run without a joblog line (killed between its
+//   rename and its line) gets its line, from the run file's own times.
 // - scheduling: one OpenMP task per run in a `parallel` + `single` region of `threads` threads,
 //   nesting off; each task takes the longest remaining run (expected_cost, ties in run order),
 //   so long runs do not end up last.
