@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "app/cli_runner.hpp"
 #include "sweep/run_file.hpp"
 #include "sweep/sweep_config.hpp"
 #include "sweep/temp_dir.hpp"
@@ -29,21 +30,11 @@ using json = nlohmann::json;
 using wirepack::testing::read_text;
 using wirepack::testing::TempDir;
 
-struct Result {
-  int code = -1;
-  std::string out, err;
-};
+using Result = wirepack::testing::CliResult;
 
+// Runs `wirepack ARGS` in `dir` (cli_runner.hpp).
 Result wirepack(const TempDir& dir, const std::string& args) {
-  TempDir logs;
-  const std::string cmd = "cd '" + dir.path().string() + "' && '" WIREPACK_BINARY "' " + args +
-                          " >'" + (logs / "out") + "' 2>'" + (logs / "err") + "'";
-  const int status = std::system(cmd.c_str());
-  Result r;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = read_text(logs / "out");
-  r.err = read_text(logs / "err");
-  return r;
+  return wirepack::testing::run_wirepack(dir, args);
 }
 
 // mu_s = 0, 0.5, 1 x 2 seeds on the rigid sphere, D over l in [1, 4].

@@ -19,6 +19,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "app/cli_runner.hpp"
 #include "sweep/run_file.hpp"
 #include "sweep/sweep_config.hpp"
 #include "sweep/temp_dir.hpp"
@@ -31,22 +32,11 @@ using json = nlohmann::json;
 using wirepack::testing::read_text;
 using wirepack::testing::TempDir;
 
-struct Result {
-  int code = -1;
-  std::string out, err;
-};
+using Result = wirepack::testing::CliResult;
 
-// Runs `ENV wirepack ARGS` in `dir`; stdout and stderr are captured.
+// Runs `wirepack ARGS` in `dir` (cli_runner.hpp).
 Result wirepack(const TempDir& dir, const std::string& args, const std::string& env = "") {
-  TempDir logs;
-  const std::string cmd = "cd '" + dir.path().string() + "' && " + env + " '" WIREPACK_BINARY "' " +
-                          args + " >'" + (logs / "out") + "' 2>'" + (logs / "err") + "'";
-  const int status = std::system(cmd.c_str());
-  Result r;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = read_text(logs / "out");
-  r.err = read_text(logs / "err");
-  return r;
+  return wirepack::testing::run_wirepack(dir, args, env);
 }
 
 // A tiny sweep: rigid, rho = 10, elements of 1 mm.

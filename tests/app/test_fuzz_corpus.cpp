@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include "app/cli_runner.hpp"
 #include "sweep/temp_dir.hpp"
 
 namespace wirepack {
@@ -21,21 +22,11 @@ namespace fs = std::filesystem;
 using wirepack::testing::read_text;
 using wirepack::testing::TempDir;
 
-struct Result {
-  int code = -1;
-  std::string out, err;
-};
+using Result = wirepack::testing::CliResult;
 
+// Runs `wirepack ARGS` in `dir` (cli_runner.hpp).
 Result wirepack(const TempDir& dir, const std::string& args) {
-  TempDir logs;
-  const std::string cmd = "cd '" + dir.path().string() + "' && '" WIREPACK_BINARY "' " + args +
-                          " >'" + (logs / "out") + "' 2>'" + (logs / "err") + "'";
-  const int status = std::system(cmd.c_str());
-  Result r;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = read_text(logs / "out");
-  r.err = read_text(logs / "err");
-  return r;
+  return wirepack::testing::run_wirepack(dir, args);
 }
 
 std::vector<fs::path> corpus(const std::string& prefix) {
