@@ -267,7 +267,9 @@ void parse_points(const json& list, const std::vector<GridAxis>& axes, Messages&
     bool ok = true;
     std::string keys;
     for (const auto& axis : axes) keys += (keys.empty() ? "" : ", ") + axis.key;
-    for (const auto& [key, v] : obj.items()) {
+    for (const auto& item : obj.items()) {
+      // A plain variable, not a structured binding: clang 14 (the fuzz build) cannot capture one.
+      const std::string key = item.key();
       if (std::none_of(axes.begin(), axes.end(), [&](const GridAxis& a) { return a.key == key; })) {
         msg.fail(pointer_child(here, key), "not a grid axis; a point sets exactly: " + keys);
         ok = false;
