@@ -75,7 +75,7 @@ struct Simulation::Impl {
         shell_a[k] = forces.shell_f[k] / assembly.vertex_mass[k] - gamma * s.shell_v[k];
       }
     }
-    alpha.assign(s.theta.size(), 0.0);
+    alpha.clear();  // no twist DOFs; with them the solve below fills every edge
     if (s.has_twist()) {
       // Free edges [0, n_free - 1), joined to the kinematic edge into the guide.
       if (s.n_free != twist_mass_nodes) {

@@ -8,6 +8,7 @@ void RodDamping::add_forces(const RodState& s, RodForces& out) const {
   if (n < 2) return;
   // Edge tangents (computed by out.reset) serve both the axial and the transverse parts.
   Vec3 t_prev = Vec3::Zero();
+  tau_.resize(n);  // node tangents of the free nodes, shared with the bending-rate dashpot
   for (int j = 0; j < n - 1 && j < nf; ++j) {
     const Vec3& t = out.edge_t[j];
     // Axial dashpot on edge j (acts on the dynamic nodes only; the guide is kinematic).
@@ -17,6 +18,7 @@ void RodDamping::add_forces(const RodState& s, RodForces& out) const {
     out.f[j + 1] -= fa;
     // Transverse damping of node j about its tangent tau_j.
     const Vec3 tau = j == 0 ? t : (t_prev + t).normalized();
+    tau_[j] = tau;
     const Vec3& v = s.v[j];
     const double m_gamma = p_.c_transverse;
     out.f[j] -= m_gamma * (v - v.dot(tau) * tau);
@@ -26,7 +28,8 @@ void RodDamping::add_forces(const RodState& s, RodForces& out) const {
     // Bending-rate dashpot at interior nodes i with a dynamic neighbourhood: w_i = eta P_i d2v_i,
     // forces -dD/dv: -w_i on i - 1 and i + 1, +2 w_i on i (rows of the guide are dropped).
     for (int i = 1; i < n - 1 && i <= nf; ++i) {
-      const Vec3 tau = (out.edge_t[i - 1] + out.edge_t[i]).normalized();
+      // tau_i from the loop above; the first guide node (i = nf) has none there.
+      const Vec3 tau = i < nf ? tau_[i] : Vec3((out.edge_t[i - 1] + out.edge_t[i]).normalized());
       const Vec3 d2 = s.v[i - 1] - 2.0 * s.v[i] + s.v[i + 1];
       const Vec3 w = p_.eta_bending * (d2 - d2.dot(tau) * tau);
       out.f[i - 1] -= w;

@@ -38,6 +38,7 @@ class RodDamping {
 
  private:
   DampingParams p_;
+  mutable Vec3List tau_;  // work space: node tangents of the last add_forces (n)
 };
 
 }  // namespace wirepack

@@ -38,6 +38,14 @@ struct FreeRod {
     s.n_free = n;
     mass.factorise(n, false);
   }
+  // Step control of the dynamics tests: tolerance 1e-4 r, damping ratio zeta, no floor.
+  StepControl control(double zeta) const {
+    StepControl c;
+    c.tolerance = 1e-4 * mat.r;
+    c.damping_ratio = zeta;
+    c.dt_floor = 1e-15;
+    return c;
+  }
   // Node mass rho A l at a density [kg].
   double node_mass(double density) const { return density * mat.A * ell; }
   double evaluate(RodState& st, Vec3List& a, std::vector<double>& alpha, Vec3List&) {
