@@ -48,14 +48,14 @@ void check_output_path(const std::string& out) {
     throw InputError(out + ": directory " + dir.string() + " is not writable");
 }
 
-int cmd_run(const std::string& scene_path, const std::string& out) {
+int cmd_run(const std::string& scene_path, const std::string& out, int threads) {
   const Scene scene = scene_path.empty()
                           ? parse_scene(default_scene_json(), "<embedded default scene>")
                           : load_scene(scene_path);
   check_output_path(out);
   RunOutcome outcome;
   try {
-    outcome = run_scene(scene, out, &std::cerr);
+    outcome = run_scene(scene, out, &std::cerr, [threads] { return threads; });
   } catch (const RunFileError& e) {
     // The simulation ended but its file could not be written (a full disk, a size limit).
     std::cerr << "wirepack: run file not written: " << e.what() << '\n';
@@ -241,7 +241,11 @@ int main(int argc, char** argv) {
                   "scene file (JSON); without one, the embedded default scene (rigid sphere, "
                   "rho = 20, mu_s = 0, l_max = 20; see scenes/rigid_default.json)");
   run->add_option("-o,--out", out_path, "run file to write (HDF5)")->required();
-
+  int run_threads = 1;
+  run->add_option("-j,--threads", run_threads,
+                  "threads of the force loops (default 1); the run file is bitwise the same "
+                  "for any count")
+      ->check(CLI::Range(1, 1024));
   SweepArgs sweep_args;
   auto* sweep = app.add_subcommand(
       "sweep",
@@ -365,7 +369,7 @@ int main(int argc, char** argv) {
   }
 
   try {
-    if (*run) return cmd_run(scene_path, out_path);
+    if (*run) return cmd_run(scene_path, out_path, run_threads);
     if (*sweep) return cmd_sweep(sweep_args);
     if (*validate) return cmd_validate(validate_path);
     if (*analyze) {

@@ -26,6 +26,9 @@ class Simulation {
   Simulation(const Simulation&) = delete;
   Simulation& operator=(const Simulation&) = delete;
 
+  // Threads of the force loops (default 1). The trajectory is bitwise the same for any count.
+  void set_threads(int threads);
+  int threads() const;
   // Advances by one accepted adaptive step. Throws SimulationError (NaN, step collapse,
   // tunnelling through the wall) with the reason.
   void step();
@@ -40,6 +43,10 @@ class Simulation {
   double dt() const;    // current time step [s]
   long steps() const;   // accepted steps
   long rejected_steps() const;
+  // Stability step of the last evaluation, 2/omega_max with the damping factor [s], and each
+  // term's share of omega_max^2 [1/s^2] (same order as term_names()): what limits the step.
+  double dt_stable() const;
+  std::vector<double> term_omega_sq() const;
 
   // Wire centerline inside the cavity (the released nodes), tip first [m].
   std::span<const Vec3> inside_nodes() const;

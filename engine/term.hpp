@@ -13,9 +13,19 @@ struct RodInertia {
   double edge_twist_inertia = 0.0;
 };
 
+// Which degrees of freedom a term's forces act on, for the stability bound: terms on disjoint
+// sets of DOFs have block-diagonal stiffnesses, whose largest eigenvalue is the larger of the
+// blocks', not their sum (engine/integrate/stability.hpp).
+enum class DofGroup {
+  kWire,      // wire node positions and twist angles
+  kShell,     // shell vertex positions
+  kCoupling,  // both (wire-shell contact)
+};
+
 class Term {
  public:
   virtual ~Term() = default;
+  virtual DofGroup dofs() const { return DofGroup::kWire; }
   virtual std::string name() const = 0;
   // Adds the generalised forces -dU/dq of this term into `out` and returns U [J].
   // May update caches of the term (contact lists, counters), hence non-const.
@@ -31,6 +41,9 @@ class Term {
   virtual void begin_trial(double /*dt*/) {}
   virtual void commit() {}
   virtual bool has_friction() const { return false; }
+  // Why the state of the last accumulate() cannot be accepted (empty: it can), e.g. a contact
+  // whose bodies passed through each other.
+  virtual std::string failure() const { return {}; }
 };
 
 }  // namespace wirepack

@@ -126,7 +126,8 @@ std::string progress_line(double l, double l_max, double wall, bool done = false
 
 }  // namespace
 
-RunOutcome run_scene(const Scene& scene, const std::string& out_path, std::ostream* progress) {
+RunOutcome run_scene(const Scene& scene, const std::string& out_path, std::ostream* progress,
+                     const std::function<int()>& threads) {
   using clock = std::chrono::steady_clock;
   const auto t0 = clock::now();
   const auto wall = [&] { return std::chrono::duration<double>(clock::now() - t0).count(); };
@@ -152,6 +153,7 @@ RunOutcome run_scene(const Scene& scene, const std::string& out_path, std::ostre
     double next_snap = snap_every * (std::floor(sim->l() / snap_every) + 1);
     double next_report = 2.0;
     while (!sim->finished()) {
+      if (threads && sim->steps() % 64 == 0) sim->set_threads(threads());
       sim->step();
       const double l = sim->l();
       if (l >= next_row) {

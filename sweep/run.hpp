@@ -1,5 +1,6 @@
 #pragma once
 // The run loop (DESIGN §4, §5): one validated scene -> one Simulation -> one run file.
+#include <functional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -27,7 +28,10 @@ const std::vector<std::string>& series_names();
 // `progress` (may be null) at most every 2 s of wall time. Any exception from the simulation
 // ends the run as failed: the series so far are still written with status "failed" and the
 // reason. The run file is written once, at the end (write-then-rename); a failure to write it
-// throws RunFileError.
-RunOutcome run_scene(const Scene& scene, const std::string& out_path, std::ostream* progress);
+// throws RunFileError. `threads` (empty: 1) says how many threads the simulation's force loops
+// may use; it is asked again every 64 steps, so a sweep can give its idle cores to the runs
+// still going. The result does not depend on it (bitwise).
+RunOutcome run_scene(const Scene& scene, const std::string& out_path, std::ostream* progress,
+                     const std::function<int()>& threads = {});
 
 }  // namespace wirepack::sweep

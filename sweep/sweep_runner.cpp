@@ -54,7 +54,17 @@ class SweepState {
   std::unique_ptr<JobLog> joblog;
   std::size_t to_run = 0, started = 0, finished = 0;  // counts of this invocation
   double finished_wall = 0;                           // sum of wall_s of finished runs [s]
-  int threads = 1;
+  int threads = 1;                                    // concurrent runs
+  int cores = 1;  // threads the sweep may use in all (--threads)
+
+  // Threads for one run's force loops: 1 while runs wait to start; once every run has started,
+  // the cores shared among the runs still going (the result does not depend on it).
+  int threads_per_run() {
+    std::lock_guard lock(mutex);
+    if (started < to_run) return 1;
+    const std::size_t running = std::max<std::size_t>(1, started - finished);
+    return std::max(1, static_cast<int>(static_cast<std::size_t>(cores) / running));
+  }
   bool manifest_dirty = false;
   bool changed = false;  // since the last progress line
   clock_type::time_point t0 = clock_type::now();
@@ -201,7 +211,8 @@ void execute(SweepState& st, ManifestEntry& e, const SweepOptions& opt) noexcept
     std::string reason;
     try {
       // The run's own progress is not shown inside a sweep (null stream).
-      const RunOutcome r = run_scene(e.run->scene, path, nullptr);
+      const RunOutcome r =
+          run_scene(e.run->scene, path, nullptr, [&st] { return st.threads_per_run(); });
       status = r.status == RunStatus::Complete ? EntryStatus::Complete : EntryStatus::Failed;
       reason = r.failure;
     } catch (const RunFileError& ex) {
@@ -260,6 +271,7 @@ SweepOutcome run_sweep(const Sweep& sweep, const SweepOptions& opt) {
   st.to_run = todo.size();
   const int want = opt.threads > 0 ? opt.threads : omp_get_num_procs();
   st.threads = static_cast<int>(std::max<std::size_t>(1, std::min<std::size_t>(want, todo.size())));
+  st.cores = std::max(1, want);
   out.threads = st.threads;
   out.manifest = manifest_path(opt.dir, opt.shard);
 
@@ -329,11 +341,11 @@ SweepOutcome run_sweep(const Sweep& sweep, const SweepOptions& opt) {
   });
 
   // One task per run. Tasks may start in any order, so each takes the next run of the
-  // longest-first list itself. No nested parallelism; Eigen is built without threads
-  // (EIGEN_DONT_PARALLELIZE).
+  // longest-first list itself. Nested parallelism: the last runs get the idle cores for their
+  // force loops (threads_per_run); Eigen is built without threads (EIGEN_DONT_PARALLELIZE).
   if (!todo.empty()) {
     std::atomic<std::size_t> next{0};
-    omp_set_max_active_levels(1);
+    omp_set_max_active_levels(2);
 #pragma omp parallel num_threads(st.threads)
 #pragma omp single
     {

@@ -74,6 +74,14 @@ ShellSelfContactTerm::ShellSelfContactTerm(const ShellMesh& mesh, const ShellSel
   if (p.friction.enabled()) friction_ = std::make_unique<FrictionHistory>(p.friction);
 }
 
+std::string ShellSelfContactTerm::failure() const {
+  if (max_overlap_ratio_ < 1.0) return {};
+  return "shell self-contact: two pieces of the shell passed through each other (overlap " +
+         std::to_string(max_overlap_ratio_) +
+         " of the limit; a force beyond what the contact "
+         "carries)";
+}
+
 double ShellSelfContactTerm::suggested_exclusion(const ShellMesh& mesh, double half_thickness) {
   double lmax = 0.0;
   for (const auto& e : mesh.edges)
@@ -226,6 +234,7 @@ double ShellSelfContactTerm::evaluate(const RodState& s, RodForces* out) {
   edge_pairs_.clear();
   for (int v : touched_) row_stiffness_[v] = 0.0;
   touched_.clear();
+  max_overlap_ratio_ = 0.0;
 
   // One contact of `scale` times `law` between point P = sum aw_k x[ai_k] and point
   // Q = sum bw_k x[bi_k], touching below distance D = law.D; returns the signed normal force
@@ -240,6 +249,7 @@ double ShellSelfContactTerm::evaluate(const RodState& s, RodForces* out) {
     const double dist = std::sqrt(dist2);
     const Vec3 n = dist > 1e-12 * D ? Vec3(d / dist) : fallback_n;
     const double delta = D - dist;
+    max_overlap_ratio_ = std::max(max_overlap_ratio_, delta / D);
     U += scale * law.energy(delta);
     if (normal) *normal = n;
     if (overlap) *overlap = delta;

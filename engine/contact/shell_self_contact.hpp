@@ -47,6 +47,7 @@
 // moved more than skin / 2 since the last build (a Verlet list). At rest nothing is a
 // candidate, so a step costs the displacement check only.
 #include <array>
+#include <limits>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -76,6 +77,7 @@ class ShellSelfContactTerm : public Term {
   // vertex_mass <= 0 or exclusion < t (the rest mesh would then touch itself).
   ShellSelfContactTerm(const ShellMesh& mesh, const ShellSelfContactParams& p);
   std::string name() const override { return "shell_self"; }
+  DofGroup dofs() const override { return DofGroup::kShell; }
   double accumulate(const RodState& s, RodForces& out) override;
   double energy(const RodState& s) override { return evaluate(s, nullptr); }
   double omega_max_sq(const RodInertia& inertia) const override;
@@ -86,6 +88,8 @@ class ShellSelfContactTerm : public Term {
     if (friction_) friction_->commit();
   }
   bool has_friction() const override { return friction_ != nullptr; }
+  // Two pieces of the shell passed through each other (overlap t for vertex-face contacts).
+  std::string failure() const override;
 
   // The exclusion suggested for a mesh: 2 t plus its longest rest edge [m] (a fold must bring
   // two pieces from beyond a hairpin of the slab's size back onto each other).
@@ -166,6 +170,7 @@ class ShellSelfContactTerm : public Term {
   std::vector<double> row_stiffness_;  // Gershgorin row sums of the contact stiffness (nv)
   std::vector<int> touched_;
   double max_row_stiffness_ = 0;  // [N/m]
+  double max_overlap_ratio_ = 0;  // largest overlap / limit D of the last evaluation [-]
   std::unique_ptr<FrictionHistory> friction_;
 };
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <tuple>
 
 #include "engine/contact/segment_distance.hpp"
@@ -155,6 +156,7 @@ double WireShellTerm::evaluate(const RodState& s, RodForces* out) {
   const double m_eff = 1.0 / (1.0 / p_.node_mass + 1.0 / p_.vertex_mass);
   double U = 0.0;
   face_pairs_.clear();
+  max_overlap_ = 0.0;
 
   // Applies one signed contact between wire point P (weights ww on wire nodes wi) and shell
   // point Q (weights ws on shell vertices si); returns the signed normal force [N] or 0.
@@ -167,6 +169,7 @@ double WireShellTerm::evaluate(const RodState& s, RodForces* out) {
     const double dist = std::sqrt(dist2);
     const Vec3 n = dist > 1e-12 * p_.r ? Vec3(d / dist) : fallback_n;
     const double delta = Dc - dist;
+    max_overlap_ = std::max(max_overlap_, delta);
     U += sign * hertz_.energy(delta);
     if (normal) *normal = n;
     if (overlap) *overlap = delta;
@@ -181,18 +184,52 @@ double WireShellTerm::evaluate(const RodState& s, RodForces* out) {
     return sign * f;
   };
 
-  // (wire edge, face): the primary contacts.
+  // Geometry first, in parallel (threads over pairs; each writes its own entry): the closest
+  // points of the (wire edge, face) and (wire edge, shell edge) pairs that can touch. The
+  // forces are then applied serially in pair order, so the sums do not depend on the threads.
   const auto wire_moved2 = [&](int e) { return std::max(moved2_[e], moved2_[e + 1]); };
-  for (size_t q = 0; q < candidates_.size(); ++q) {
+  const int n_cand = static_cast<int>(candidates_.size());
+  const int n_edge = static_cast<int>(seg_edge_.size());
+  cand_geo_.resize(n_cand);
+  edge_geo_.resize(n_edge);
+  const double far2 = Dc * Dc;  // dist2 at or above this: no contact
+  const double skipped = std::numeric_limits<double>::infinity();  // dist2 of a skipped pair
+#pragma omp parallel
+  {
+#pragma omp for schedule(static) nowait
+    for (int q = 0; q < n_cand; ++q) {
+      const auto [e, f] = candidates_[q];
+      const auto& v = mesh_.faces[f];
+      const double moved2 = std::max(
+          wire_moved2(e),
+          std::max(shell_moved2_[v[0]], std::max(shell_moved2_[v[1]], shell_moved2_[v[2]])));
+      if (moved2 < cand_slack2_4_[q]) {  // cannot touch yet
+        cand_geo_[q].dist2 = far2;
+        continue;
+      }
+      cand_geo_[q] = segment_triangle_closest(s.x[e], s.x[e + 1], s.shell_x[v[0]], s.shell_x[v[1]],
+                                              s.shell_x[v[2]]);
+    }
+#pragma omp for schedule(static)
+    for (int q = 0; q < n_edge; ++q) {
+      const auto [e, k] = seg_edge_[q];
+      const int v0 = mesh_.edges[k][0], v1 = mesh_.edges[k][1];
+      if (std::max(wire_moved2(e), std::max(shell_moved2_[v0], shell_moved2_[v1])) <
+          edge_slack2_4_[q]) {
+        edge_geo_[q].dist2 = skipped;
+        continue;
+      }
+      edge_geo_[q] = segment_segment_closest(s.x[e], s.x[e + 1], s.shell_x[v0], s.shell_x[v1]);
+    }
+  }
+
+  // (wire edge, face): the primary contacts.
+  for (int q = 0; q < n_cand; ++q) {
+    const TriangleClosest& tc = cand_geo_[q];
+    if (tc.dist2 >= far2) continue;
     const auto [e, f] = candidates_[q];
     const auto& v = mesh_.faces[f];
-    const double moved2 =
-        std::max(wire_moved2(e),
-                 std::max(shell_moved2_[v[0]], std::max(shell_moved2_[v[1]], shell_moved2_[v[2]])));
-    if (moved2 < cand_slack2_4_[q]) continue;  // cannot touch yet
     const Vec3 &a = s.shell_x[v[0]], &b = s.shell_x[v[1]], &c = s.shell_x[v[2]];
-    const TriangleClosest tc = segment_triangle_closest(s.x[e], s.x[e + 1], a, b, c);
-    if (tc.dist2 >= Dc * Dc) continue;
     const Vec3 P = s.x[e] + tc.s * (s.x[e + 1] - s.x[e]);
     const Vec3 Q = tc.w[0] * a + tc.w[1] * b + tc.w[2] * c;
     Vec3 fn = (b - a).cross(c - a).normalized();
@@ -218,16 +255,12 @@ double WireShellTerm::evaluate(const RodState& s, RodForces* out) {
     }
     for (int i = 0; i < n_own; ++i) face_pairs_[owners[i]].force += signed_force / n_own;
   };
-  const Vec3 no_n = Vec3::UnitZ();  // only for exactly coincident points (measure zero)
-  for (size_t q = 0; q < seg_edge_.size(); ++q) {  // - (wire edge, shell edge)
+  const Vec3 no_n = Vec3::UnitZ();    // only for exactly coincident points (measure zero)
+  for (int q = 0; q < n_edge; ++q) {  // - (wire edge, shell edge)
+    const SegmentClosest& c = edge_geo_[q];
+    if (c.dist2 == skipped) continue;  // contact() below decides from the closest points
     const auto [e, k] = seg_edge_[q];
     const int v0 = mesh_.edges[k][0], v1 = mesh_.edges[k][1];
-    if (std::max(wire_moved2(e), std::max(shell_moved2_[v0], shell_moved2_[v1])) <
-        edge_slack2_4_[q]) {
-      continue;
-    }
-    const SegmentClosest c =
-        segment_segment_closest(s.x[e], s.x[e + 1], s.shell_x[v0], s.shell_x[v1]);
     const int wi[2] = {e, e + 1}, si[2] = {v0, v1};
     const double ww[2] = {1 - c.s, c.s}, ws[2] = {1 - c.t, c.t};
     const double f = contact(s.x[e] + c.s * (s.x[e + 1] - s.x[e]),
@@ -289,6 +322,12 @@ double WireShellTerm::accumulate(const RodState& s, RodForces& out) {
     if (twist) out.torque[e] += (-r * c.n).cross(ft).dot(te);
   }
   return U;
+}
+
+std::string WireShellTerm::failure() const {
+  if (max_overlap_ < hertz_.D) return {};
+  return "wire-shell contact: the wire's axis reached the shell's mid-surface (overlap " +
+         std::to_string(max_overlap_ / p_.r) + " r)";
 }
 
 double WireShellTerm::omega_max_sq(const RodInertia&) const {

@@ -15,6 +15,7 @@
 // (the Engine II mechanism) acts on the (edge, face) pairs, each bounded by its share of the
 // net normal force. Forces go to the wire nodes by the segment parameter and to the shell
 // vertices by barycentric weights (action = reaction).
+#include <limits>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -22,6 +23,8 @@
 #include "engine/contact/cell_grid.hpp"
 #include "engine/contact/friction.hpp"
 #include "engine/contact/hertz.hpp"
+#include "engine/contact/segment_distance.hpp"
+#include "engine/contact/triangle_distance.hpp"
 #include "engine/shell/shell_term.hpp"
 #include "engine/term.hpp"
 
@@ -42,6 +45,7 @@ class WireShellTerm : public Term {
  public:
   WireShellTerm(const ShellMesh& mesh, const WireShellParams& p);
   std::string name() const override { return "wire_shell"; }
+  DofGroup dofs() const override { return DofGroup::kCoupling; }
   double accumulate(const RodState& s, RodForces& out) override;
   double energy(const RodState& s) override { return evaluate(s, nullptr); }
   double omega_max_sq(const RodInertia& inertia) const override;
@@ -52,6 +56,8 @@ class WireShellTerm : public Term {
     if (friction_) friction_->commit();
   }
   bool has_friction() const override { return friction_ != nullptr; }
+  // The wire's axis reached the shell's mid-surface in a contact (overlap r + t/2).
+  std::string failure() const override;
 
   // (wire edge, face) pairs whose pieces overlap at the last accumulate.
   int contacts() const { return static_cast<int>(face_pairs_.size()); }
@@ -100,7 +106,12 @@ class WireShellTerm : public Term {
   long rebuilds_ = 0;
   double face_reach_ = 0;  // largest distance from a face centroid to its vertices [m]
   std::vector<FacePair> face_pairs_;
+  // Closest points per candidate (dist2 >= (r + t/2)^2 when skipped by its slack) and per
+  // (wire edge, shell edge) pair (dist2 infinite when skipped), of the last evaluation.
+  std::vector<TriangleClosest> cand_geo_;
+  std::vector<SegmentClosest> edge_geo_;
   double max_stiffness_ = 0;
+  double max_overlap_ = 0;  // largest overlap of the last evaluation [m]
   std::unique_ptr<FrictionHistory> friction_;
 };
 

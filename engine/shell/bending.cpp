@@ -78,6 +78,36 @@ BendingTerm::BendingTerm(const ShellMesh& m, const ShellMaterial& material)
     }
   }
 
+  // Assembly plans (targets: -1 where the serial loops add nothing).
+  const int nv = static_cast<int>(m.rest.size());
+  std::vector<int> fold_t(9 * nf), edge_t(3 * nf), face_t(3 * nf), normal_t(2 * ne, -1);
+  for (int f = 0; f < nf; ++f) {
+    const auto& v = m.faces[f];
+    for (int i = 0; i < 3; ++i) {
+      const EdgeKind kind = edge_kind_[m.face_edges[f][i]];
+      const bool on = kind != EdgeKind::kFree;
+      fold_t[9 * f + 3 * i] = on ? v[i] : -1;
+      fold_t[9 * f + 3 * i + 1] = on ? v[next(i)] : -1;
+      fold_t[9 * f + 3 * i + 2] = on ? v[prev(i)] : -1;
+      edge_t[3 * f + i] = kind == EdgeKind::kInterior ? m.face_edges[f][i] : -1;
+      face_t[3 * f + i] = v[i];
+    }
+  }
+  for (int e = 0; e < ne; ++e) {
+    if (edge_kind_[e] != EdgeKind::kInterior) continue;
+    normal_t[2 * e] = m.edge_faces[e][0];
+    normal_t[2 * e + 1] = m.edge_faces[e][1];
+  }
+  fold_plan_ = ScatterPlan(fold_t, 9, nv);
+  edge_plan_ = ScatterPlan(edge_t, 3, ne);
+  normal_plan_ = ScatterPlan(normal_t, 2, nf);
+  face_plan_ = ScatterPlan(face_t, 3, nv);
+  fold_force_.assign(9 * nf, Vec3::Zero());
+  edge_term_.assign(3 * nf, Vec3::Zero());
+  normal_term_.assign(2 * ne, Vec3::Zero());
+  face_force_.assign(3 * nf, Vec3::Zero());
+  face_U_.assign(nf, 0.0);
+
   // Rest second fundamental form with the same discretisation.
   compute_normals(m.rest);
   bbar_.resize(nf);
@@ -89,6 +119,7 @@ BendingTerm::BendingTerm(const ShellMesh& m, const ShellMaterial& material)
 
 void BendingTerm::compute_normals(const Vec3List& x) {
   const int nf = static_cast<int>(faces_.size());
+#pragma omp parallel for schedule(static)
   for (int f = 0; f < nf; ++f) {
     const auto& v = faces_[f];
     const Vec3 c = (x[v[1]] - x[v[0]]).cross(x[v[2]] - x[v[0]]);
@@ -96,6 +127,7 @@ void BendingTerm::compute_normals(const Vec3List& x) {
     face_normal_[f] = c / face_dblarea_[f];
   }
   const int ne = static_cast<int>(edge_faces_.size());
+#pragma omp parallel for schedule(static)
   for (int e = 0; e < ne; ++e) {
     const auto& ef = edge_faces_[e];
     switch (edge_kind_[e]) {
@@ -155,48 +187,60 @@ double BendingTerm::accumulate(const Vec3List& x, Vec3List& out) {
   const int nf = static_cast<int>(faces_.size());
   const int ne = static_cast<int>(edge_faces_.size());
   compute_normals(x);
-  std::fill(grad_edge_normal_.begin(), grad_edge_normal_.end(), Vec3::Zero());
-  std::fill(grad_face_normal_.begin(), grad_face_normal_.end(), Vec3::Zero());
+  // -0.0 in the slots a serial loop skips: x + (-0.0) is x for every x.
+  const Vec3 none = Vec3::Constant(-0.0);
 
   // 1. Per face: U_f(s) and the explicit dependence of s_i = n_i . w_i on the positions
   //    (w_i = q_{i+1} + q_{i+2} - 2 q_i); dU/dn_e collects sigma_i w_i from both faces.
-  double U = 0.0;
+#pragma omp parallel for schedule(static)
   for (int f = 0; f < nf; ++f) {
     const auto& v = faces_[f];
     const auto& fe = face_edges_[f];
     const Eigen::Vector3d s = edge_folds(x, f);
     Eigen::Vector3d sigma;  // dU/ds_i [N]
-    U += face_energy(f, s, &sigma);
+    face_U_[f] = face_energy(f, s, &sigma);
     for (int i = 0; i < 3; ++i) {
       const int e = fe[i];
-      if (edge_kind_[e] == EdgeKind::kFree) continue;
-      const Vec3 gn = sigma[i] * edge_normal_[e];  // dU/dw_i
-      out[v[i]] += 2.0 * gn;
-      out[v[next(i)]] -= gn;
-      out[v[prev(i)]] -= gn;
-      if (edge_kind_[e] == EdgeKind::kInterior) {
-        grad_edge_normal_[e] += sigma[i] * (x[v[next(i)]] + x[v[prev(i)]] - 2.0 * x[v[i]]);
+      Vec3* slot = &fold_force_[9 * f + 3 * i];
+      if (edge_kind_[e] == EdgeKind::kFree) {
+        slot[0] = slot[1] = slot[2] = none;
+        edge_term_[3 * f + i] = none;
+        continue;
       }
+      const Vec3 gn = sigma[i] * edge_normal_[e];  // dU/dw_i
+      slot[0] = 2.0 * gn;
+      slot[1] = -gn;
+      slot[2] = -gn;
+      edge_term_[3 * f + i] = sigma[i] * (x[v[next(i)]] + x[v[prev(i)]] - 2.0 * x[v[i]]);
     }
   }
+  fold_plan_.gather_add(fold_force_, out);
+  edge_plan_.gather_set(edge_term_, grad_edge_normal_);
 
   // 2. Edge normal n = m / |m|, m = N_f0 + N_f1: dU/dm = (I - n n^T) dU/dn / |m|, and dU/dm
   //    goes to both face normals.
+#pragma omp parallel for schedule(static)
   for (int e = 0; e < ne; ++e) {
     if (edge_kind_[e] != EdgeKind::kInterior) continue;
     const Vec3& n = edge_normal_[e];
     const Vec3& g = grad_edge_normal_[e];
     const Vec3 gm = (g - n * n.dot(g)) / edge_mnorm_[e];
-    grad_face_normal_[edge_faces_[e][0]] += gm;
-    grad_face_normal_[edge_faces_[e][1]] += gm;
+    normal_term_[2 * e] = gm;
+    normal_term_[2 * e + 1] = gm;
   }
+  normal_plan_.gather_set(normal_term_, grad_face_normal_);
 
   // 3. Face normal N = c / |c|, c = e1 x e2 (e1 = q1 - q0, e2 = q2 - q0):
   //    dU/dc = (I - N N^T) dU/dN / |c|;  dU/dq1 = e2 x dU/dc, dU/dq2 = dU/dc x e1,
   //    dU/dq0 = -(dU/dq1 + dU/dq2).
+#pragma omp parallel for schedule(static)
   for (int f = 0; f < nf; ++f) {
     const Vec3& g = grad_face_normal_[f];
-    if (g.isZero(0.0)) continue;
+    Vec3* slot = &face_force_[3 * f];
+    if (g.isZero(0.0)) {
+      slot[0] = slot[1] = slot[2] = none;
+      continue;
+    }
     const auto& v = faces_[f];
     const Vec3& N = face_normal_[f];
     const Vec3 gc = (g - N * N.dot(g)) / face_dblarea_[f];
@@ -204,11 +248,12 @@ double BendingTerm::accumulate(const Vec3List& x, Vec3List& out) {
     const Vec3 e2 = x[v[2]] - x[v[0]];
     const Vec3 g1 = e2.cross(gc);
     const Vec3 g2 = gc.cross(e1);
-    out[v[1]] -= g1;
-    out[v[2]] -= g2;
-    out[v[0]] += g1 + g2;
+    slot[0] = g1 + g2;
+    slot[1] = -g1;
+    slot[2] = -g2;
   }
-  return U;
+  face_plan_.gather_add(face_force_, out);
+  return ordered_sum(face_U_);
 }
 
 double BendingTerm::energy(const Vec3List& x) {

@@ -44,6 +44,7 @@
 
 #include <Eigen/Core>
 
+#include "engine/shell/scatter_plan.hpp"
 #include "engine/shell/shell_term.hpp"
 
 namespace wirepack {
@@ -99,6 +100,18 @@ class BendingTerm : public ShellTerm {
   std::vector<double> edge_mnorm_;      // |N_f0 + N_f1| on interior edges (ne)
   std::vector<Vec3> grad_edge_normal_;  // dU/dn_e (ne) [J]
   std::vector<Vec3> grad_face_normal_;  // dU/dN_f (nf) [J]
+
+  // Parallel assembly (threads over faces and edges; the sums are bitwise those of serial
+  // loops over faces, then edges, then faces, see scatter_plan.hpp):
+  ScatterPlan fold_plan_;       // 9 slots per face: fold i's three vertex terms (i, i+1, i+2)
+  ScatterPlan edge_plan_;       // 3 slots per face: sigma_i w_i into dU/dn of edge i
+  ScatterPlan normal_plan_;     // 2 slots per edge: dU/dm into its two faces' dU/dN
+  ScatterPlan face_plan_;       // 3 slots per face: the face normal's vertex terms
+  Vec3List fold_force_;         // (9 nf) [N]
+  Vec3List edge_term_;          // (3 nf) [J]
+  Vec3List normal_term_;        // (2 ne) [J]
+  Vec3List face_force_;         // (3 nf) [N]
+  std::vector<double> face_U_;  // (nf) [J]
 };
 
 }  // namespace wirepack

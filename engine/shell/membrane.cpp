@@ -65,13 +65,20 @@ MembraneTerm::MembraneTerm(const ShellMesh& mesh, const ShellMaterial& material)
     for (int k = 0; k < 3; ++k) vertex_sum[v[k]] += lambda;
   }
   for (double s : vertex_sum) rest_bound_ = std::max(rest_bound_, s);
+  std::vector<int> targets;
+  for (const Face& face : faces_) targets.insert(targets.end(), face.v.begin(), face.v.end());
+  plan_ = ScatterPlan(targets, 3, static_cast<int>(mesh.rest.size()));
+  face_force_.assign(targets.size(), Vec3::Zero());
+  face_energy_.assign(faces_.size(), 0.0);
 }
 
 template <bool kForces>
 double MembraneTerm::evaluate(const Vec3List& x, Vec3List* f) {
-  double U = 0.0;
   double max_stretch_sq = 1.0;
-  for (const Face& face : faces_) {
+  const int nf = static_cast<int>(faces_.size());
+#pragma omp parallel for schedule(static) reduction(max : max_stretch_sq)
+  for (int k = 0; k < nf; ++k) {
+    const Face& face = faces_[k];
     const Vec3 e1 = x[face.v[1]] - x[face.v[0]];
     const Vec3 e2 = x[face.v[2]] - x[face.v[0]];
     const double a11 = e1.dot(e1), a12 = e1.dot(e2), a22 = e2.dot(e2);
@@ -81,7 +88,7 @@ double MembraneTerm::evaluate(const Vec3List& x, Vec3List* f) {
     alpha *= 0.5;
     const Eigen::Matrix2d A = face.abar_inv * alpha;  // mixed strain A^i_j [-]
     const double tr = A.trace();
-    U += 0.5 * M_ * face.area * (nu_ * tr * tr + (1.0 - nu_) * (A * A).trace());
+    face_energy_[k] = 0.5 * M_ * face.area * (nu_ * tr * tr + (1.0 - nu_) * (A * A).trace());
     if constexpr (kForces) {
       // S^{ij} = dU/d alpha_ij = M Abar [nu tr(A) abar^{ij} + (1 - nu) (abar^{-1} alpha
       // abar^{-1})^{ij}] (symmetric); d alpha_ij = (de_i . e_j + e_i . de_j) / 2 gives
@@ -90,9 +97,9 @@ double MembraneTerm::evaluate(const Vec3List& x, Vec3List* f) {
           M_ * face.area * (nu_ * tr * face.abar_inv + (1.0 - nu_) * A * face.abar_inv);
       const Vec3 g1 = S(0, 0) * e1 + S(0, 1) * e2;
       const Vec3 g2 = S(1, 0) * e1 + S(1, 1) * e2;
-      (*f)[face.v[0]] += g1 + g2;
-      (*f)[face.v[1]] -= g1;
-      (*f)[face.v[2]] -= g2;
+      face_force_[3 * k] = g1 + g2;
+      face_force_[3 * k + 1] = -g1;
+      face_force_[3 * k + 2] = -g2;
       // Largest eigenvalue of abar^{-1} a = squared largest principal stretch.
       const double t = 0.5 * (face.abar_inv(0, 0) * a11 + 2 * face.abar_inv(0, 1) * a12 +
                               face.abar_inv(1, 1) * a22);
@@ -100,8 +107,11 @@ double MembraneTerm::evaluate(const Vec3List& x, Vec3List* f) {
       max_stretch_sq = std::max(max_stretch_sq, t + std::sqrt(std::max(0.0, t * t - d)));
     }
   }
-  if constexpr (kForces) max_stretch_sq_ = max_stretch_sq;
-  return U;
+  if constexpr (kForces) {
+    plan_.gather_add(face_force_, *f);
+    max_stretch_sq_ = max_stretch_sq;
+  }
+  return ordered_sum(face_energy_);
 }
 
 double MembraneTerm::accumulate(const Vec3List& x, Vec3List& f) {

@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 
+#include "engine/shell/scatter_plan.hpp"
 #include "engine/shell/shell_term.hpp"
 
 namespace wirepack {
@@ -49,6 +50,11 @@ class MembraneTerm : public ShellTerm {
   double M_, nu_;                // membrane rigidity [N/m], Poisson ratio [-]
   double rest_bound_ = 0.0;      // [N/m]
   double max_stretch_sq_ = 1.0;  // [-]
+  // Parallel assembly (threads over faces, bitwise the serial sums): slot j of face k is
+  // vertex v[j]; per-face forces (3 nf) [N] and energies (nf) [J].
+  ScatterPlan plan_;
+  Vec3List face_force_;
+  std::vector<double> face_energy_;
 };
 
 }  // namespace wirepack

@@ -143,6 +143,25 @@ TEST(SweepRunner, OneAndTwoThreadsGiveBitwiseIdenticalSeries) {
   EXPECT_NE(s1.snapshots.back().wire, s2.snapshots.back().wire);
 }
 
+// Engine V: once every run has started, the idle cores go to the runs still going (their force
+// loops get threads); a single elastic run (rho = 10, coarse, shell contact from l ~ 1.3) on a
+// 2-thread sweep is bitwise the run of a 1-thread sweep.
+TEST(SweepRunner, IdleCoresGoToTheLastRunsWithoutChangingThem) {
+  TempDir dir;
+  const Sweep sw =
+      parse_sweep(parse_json_text(R"({"name": "elastic", "base": {"rho": 10, "xi": 10, "eps": 1000,
+        "mu_s": 0.5, "shell": "elastic", "l_max": 2,
+        "numerics": {"element_length": 1e-3, "shell_mesh_size": 1e-3}}, "grid": {}, "seeds": 1})",
+                                  "elastic.json"),
+                  "elastic.json");
+  ASSERT_EQ(run(sw, dir / "one", 1).complete, 1u);
+  ASSERT_EQ(run(sw, dir / "two", 2).complete, 1u);
+  const RunRecord a = read_run_file(dir / ("one/" + sw.runs[0].file));
+  const RunRecord b = read_run_file(dir / ("two/" + sw.runs[0].file));
+  expect_same_trajectory(a, b, sw.runs[0].file);
+  EXPECT_EQ(a.snapshots.back().shell_vertices, b.snapshots.back().shell_vertices);
+}
+
 TEST(SweepRunner, FailedRunIsRecordedAndTheOthersComplete) {
   TempDir dir;
   // E_w = 1e300 overflows the forces: the engine stops with a non-finite state.
