@@ -128,15 +128,27 @@ void WireShellTerm::rebuild(const RodState& s) {
         segment_segment_closest(s.x[e], s.x[e + 1], s.shell_x[vtx], s.shell_x[vtx]);
     vert_slack2_4_.push_back(quarter_slack2(c.dist2, Dc, p_.r));
   }
-}
-
-int WireShellTerm::find_face_pair(int e, int f) const {
-  const auto it = std::lower_bound(
-      face_pairs_.begin(), face_pairs_.end(), std::make_pair(e, f),
-      [](const FacePair& c, const std::pair<int, int>& k) { return std::make_pair(c.e, c.f) < k; });
-  return it != face_pairs_.end() && it->e == e && it->f == f
-             ? static_cast<int>(it - face_pairs_.begin())
-             : -1;
+  // Owners of each correction: the candidates (wire edge, face) of the faces around the shell
+  // edge (its two faces in order) or vertex (its fan in order); -1 where a face is not a
+  // candidate. A correction's pieces lie on its owners' faces, so it touches only while one of
+  // its owners does.
+  const auto candidate_of = [&](int e, int f) {
+    const auto it = std::lower_bound(candidates_.begin(), candidates_.end(), std::make_pair(e, f));
+    return it != candidates_.end() && *it == std::make_pair(e, f)
+               ? static_cast<int>(it - candidates_.begin())
+               : -1;
+  };
+  edge_owner_.clear();
+  for (const auto& [e, k] : seg_edge_) {
+    const auto& ef = mesh_.edge_faces[k];
+    edge_owner_.push_back({candidate_of(e, ef[0]), ef[1] >= 0 ? candidate_of(e, ef[1]) : -1});
+  }
+  vert_owner_start_.assign(1, 0);
+  vert_owner_.clear();
+  for (const auto& [e, vtx] : seg_vert_) {
+    for (int f : vertex_faces_[vtx]) vert_owner_.push_back(candidate_of(e, f));
+    vert_owner_start_.push_back(static_cast<int>(vert_owner_.size()));
+  }
 }
 
 namespace {
@@ -194,9 +206,11 @@ double WireShellTerm::evaluate(const RodState& s, RodForces* out) {
   edge_geo_.resize(n_edge);
   const double far2 = Dc * Dc;  // dist2 at or above this: no contact
   const double skipped = std::numeric_limits<double>::infinity();  // dist2 of a skipped pair
+  // A candidate touches when its distance is below r + t/2 (the serial loop below).
+  const auto touching = [&](int q) { return q >= 0 && cand_geo_[q].dist2 < far2; };
 #pragma omp parallel
   {
-#pragma omp for schedule(static) nowait
+#pragma omp for schedule(static)
     for (int q = 0; q < n_cand; ++q) {
       const auto [e, f] = candidates_[q];
       const auto& v = mesh_.faces[f];
@@ -215,7 +229,8 @@ double WireShellTerm::evaluate(const RodState& s, RodForces* out) {
       const auto [e, k] = seg_edge_[q];
       const int v0 = mesh_.edges[k][0], v1 = mesh_.edges[k][1];
       if (std::max(wire_moved2(e), std::max(shell_moved2_[v0], shell_moved2_[v1])) <
-          edge_slack2_4_[q]) {
+              edge_slack2_4_[q] ||
+          (!touching(edge_owner_[q][0]) && !touching(edge_owner_[q][1]))) {
         edge_geo_[q].dist2 = skipped;
         continue;
       }
@@ -224,9 +239,11 @@ double WireShellTerm::evaluate(const RodState& s, RodForces* out) {
   }
 
   // (wire edge, face): the primary contacts.
+  cand_face_pair_.assign(n_cand, -1);
   for (int q = 0; q < n_cand; ++q) {
     const TriangleClosest& tc = cand_geo_[q];
     if (tc.dist2 >= far2) continue;
+    cand_face_pair_[q] = static_cast<int>(face_pairs_.size());
     const auto [e, f] = candidates_[q];
     const auto& v = mesh_.faces[f];
     const Vec3 &a = s.shell_x[v[0]], &b = s.shell_x[v[1]], &c = s.shell_x[v[2]];
@@ -242,16 +259,13 @@ double WireShellTerm::evaluate(const RodState& s, RodForces* out) {
   }
 
   // Corrections of inclusion-exclusion, each shared by the face pairs it belongs to.
-  auto share = [&](double signed_force, const int* wire_edges, int n_we, const int* faces,
-                   int n_f) {
+  auto share = [&](double signed_force, const int* owner_candidates, int n_c) {
     if (signed_force == 0.0) return;
     int owners[16];
     int n_own = 0;
-    for (int i = 0; i < n_we; ++i) {
-      for (int j = 0; j < n_f; ++j) {
-        const int k = find_face_pair(wire_edges[i], faces[j]);
-        if (k >= 0 && n_own < 16) owners[n_own++] = k;
-      }
+    for (int j = 0; j < n_c; ++j) {
+      const int k = owner_candidates[j] >= 0 ? cand_face_pair_[owner_candidates[j]] : -1;
+      if (k >= 0 && n_own < 16) owners[n_own++] = k;
     }
     for (int i = 0; i < n_own; ++i) face_pairs_[owners[i]].force += signed_force / n_own;
   };
@@ -266,13 +280,16 @@ double WireShellTerm::evaluate(const RodState& s, RodForces* out) {
     const double f = contact(s.x[e] + c.s * (s.x[e + 1] - s.x[e]),
                              s.shell_x[v0] + c.t * (s.shell_x[v1] - s.shell_x[v0]), no_n, wi, ww, 2,
                              si, ws, 2, -1.0, nullptr, nullptr);
-    const auto& ef = mesh_.edge_faces[k];
-    const int faces[2] = {ef[0], ef[1]};
-    share(f, &e, 1, faces, ef[1] >= 0 ? 2 : 1);
+    share(f, edge_owner_[q].data(), 2);
   }
   for (size_t q = 0; q < seg_vert_.size(); ++q) {  // + (wire edge, shell vertex)
     const auto [e, vtx] = seg_vert_[q];
     if (std::max(wire_moved2(e), shell_moved2_[vtx]) < vert_slack2_4_[q]) continue;
+    const int* owners = vert_owner_.data() + vert_owner_start_[q];
+    const int n_owners = vert_owner_start_[q + 1] - vert_owner_start_[q];
+    bool any = false;
+    for (int j = 0; j < n_owners && !any; ++j) any = touching(owners[j]);
+    if (!any) continue;
     const Vec3& Q = s.shell_x[vtx];
     const Vec3 d = s.x[e + 1] - s.x[e];
     const double dd = d.squaredNorm();
@@ -281,8 +298,7 @@ double WireShellTerm::evaluate(const RodState& s, RodForces* out) {
     const double ww[2] = {1 - t, t}, one = 1.0;
     const double f =
         contact(s.x[e] + t * d, Q, no_n, wi, ww, 2, &vtx, &one, 1, +1.0, nullptr, nullptr);
-    const auto& vf = vertex_faces_[vtx];
-    share(f, &e, 1, vf.data(), static_cast<int>(vf.size()));
+    share(f, owners, n_owners);
   }
   return U;
 }
@@ -331,7 +347,14 @@ std::string WireShellTerm::failure() const {
 }
 
 double WireShellTerm::omega_max_sq(const RodInertia&) const {
-  return 2.0 * max_stiffness_ / std::min(p_.node_mass, p_.vertex_mass);
+  // Gershgorin on M^-1/2 K M^-1/2 (the eigenvalues of M^-1 K) for a contact of stiffness k
+  // between a wire point (weights summing to 1 over nodes of mass m_n) and a shell point
+  // (weights summing to 1 over vertices of mass m_v): the row of a vertex sums to at most
+  // k (1 / m_v + 1 / sqrt(m_v m_n)), a node's to k (1 / m_n + 1 / sqrt(m_v m_n)). Equal
+  // masses give the former 2 k / m; a light vertex against the wire's point mass (m_v / m_n
+  // ~ 0.07 at xi = 10) about 1.3 k / m_v.
+  const double m_min = std::min(p_.node_mass, p_.vertex_mass);
+  return max_stiffness_ * (1.0 / m_min + 1.0 / std::sqrt(p_.node_mass * p_.vertex_mass));
 }
 
 }  // namespace wirepack

@@ -15,6 +15,7 @@
 // (the Engine II mechanism) acts on the (edge, face) pairs, each bounded by its share of the
 // net normal force. Forces go to the wire nodes by the segment parameter and to the shell
 // vertices by barycentric weights (action = reaction).
+#include <array>
 #include <limits>
 #include <memory>
 #include <utility>
@@ -78,7 +79,6 @@ class WireShellTerm : public Term {
   void maybe_rebuild(const RodState& s);
   void rebuild(const RodState& s);
   int active_edges(const RodState& s) const { return std::min(s.n_free, s.num_edges()); }
-  int find_face_pair(int e, int f) const;
 
   const ShellMesh& mesh_;
   WireShellParams p_;
@@ -91,6 +91,10 @@ class WireShellTerm : public Term {
   std::vector<std::pair<int, int>> candidates_;  // (wire edge, face), sorted
   std::vector<std::pair<int, int>> seg_edge_;    // (wire edge, shell edge) of the candidates
   std::vector<std::pair<int, int>> seg_vert_;    // (wire edge, interior vertex) of them
+  // Owner candidates of each correction (indices into candidates_, -1: not a candidate): the
+  // two faces of a shell edge; the fan of a vertex (CSR: vert_owner_start_, one per pair + 1).
+  std::vector<std::array<int, 2>> edge_owner_;
+  std::vector<int> vert_owner_start_, vert_owner_;
   // A quarter of each pair's squared slack at the build (distance - (r + t/2), less 1e-9 r):
   // while every point of the pair moved less than its square root, the pair cannot touch
   // (its distance shrinks by at most the wire's plus the shell's move), so it is skipped.
@@ -109,6 +113,7 @@ class WireShellTerm : public Term {
   // Closest points per candidate (dist2 >= (r + t/2)^2 when skipped by its slack) and per
   // (wire edge, shell edge) pair (dist2 infinite when skipped), of the last evaluation.
   std::vector<TriangleClosest> cand_geo_;
+  std::vector<int> cand_face_pair_;  // index into face_pairs_ per candidate, -1 when apart
   std::vector<SegmentClosest> edge_geo_;
   double max_stiffness_ = 0;
   double max_overlap_ = 0;  // largest overlap of the last evaluation [m]

@@ -56,8 +56,12 @@ class BendingTerm : public ShellTerm {
   std::string name() const override { return "shell_bending"; }
   double accumulate(const Vec3List& x, Vec3List& f) override;
   double energy(const Vec3List& x) override;
-  // Highest (zig-zag) transverse mode: omega^2 = C_omega B / (m h_min^2), see bending.cpp.
+  // Highest mode: omega^2 = kOmegaMargin lambda_rest / m, lambda_rest the largest eigenvalue
+  // of this mesh's rest stiffness (power iteration at construction), see bending.cpp.
   double omega_max_sq(double vertex_mass) const override;
+  // lambda_rest [N/m] and the former closed-form estimate C_omega B / h_min^2 [N/m].
+  double rest_stiffness_max() const { return lambda_rest_; }
+  double closed_form_stiffness() const { return kOmegaConstant * B_ / (h_min_ * h_min_); }
 
   // Energy of each face at x (nf) [J]; sums to energy(x). For tests and diagnostics.
   std::vector<double> face_energies(const Vec3List& x);
@@ -68,6 +72,9 @@ class BendingTerm : public ShellTerm {
   // Dimensionless constant of omega_max_sq (calibrated against the largest eigenvalue of the
   // finite-difference stiffness, tests/engine/shell/test_bending.cpp).
   static constexpr double kOmegaConstant = 40.0;
+  // Margin of omega_max^2 over the measured rest eigenvalue (the power iteration's Rayleigh
+  // quotient approaches lambda_max from below; geometric stiffening is not included).
+  static constexpr double kOmegaMargin = 1.25;
 
  private:
   // Edge normal rule: interior (average of the two face normals), free boundary (own face
@@ -78,6 +85,8 @@ class BendingTerm : public ShellTerm {
   void compute_normals(const Vec3List& x);
   // s_i of face f from the current normals (3).
   Eigen::Vector3d edge_folds(const Vec3List& x, int f) const;
+  // Largest eigenvalue of the stiffness at `rest` by power iteration [N/m] (constructor).
+  double rest_power_iteration(const Vec3List& rest);
   // Energy of face f and dU/ds_i (3) from its folds s (3).
   double face_energy(int f, const Eigen::Vector3d& s, Eigen::Vector3d* dU_ds) const;
 
@@ -92,6 +101,7 @@ class BendingTerm : public ShellTerm {
   std::vector<Eigen::Matrix2d> abar_inv_;       // inverse rest metric, contravariant (nf) [1/m^2]
   std::vector<Eigen::Matrix2d> bbar_;           // rest second fundamental form (nf) [m]
   double h_min_ = 0.0;                          // smallest rest altitude of any face [m]
+  double lambda_rest_ = 0.0;                    // largest rest stiffness eigenvalue [N/m]
 
   // Work arrays (per-run state, reused across calls).
   std::vector<Vec3> face_normal_;       // unit normal N_f (nf)

@@ -63,6 +63,7 @@ MembraneTerm::MembraneTerm(const ShellMesh& mesh, const ShellMaterial& material)
             .eigenvalues()
             .maxCoeff();
     for (int k = 0; k < 3; ++k) vertex_sum[v[k]] += lambda;
+    face_lambda_.push_back(lambda);
   }
   for (double s : vertex_sum) rest_bound_ = std::max(rest_bound_, s);
   std::vector<int> targets;
@@ -70,6 +71,9 @@ MembraneTerm::MembraneTerm(const ShellMesh& mesh, const ShellMaterial& material)
   plan_ = ScatterPlan(targets, 3, static_cast<int>(mesh.rest.size()));
   face_force_.assign(targets.size(), Vec3::Zero());
   face_energy_.assign(faces_.size(), 0.0);
+  face_load_.assign(targets.size(), 0.0);
+  vertex_load_.assign(mesh.rest.size(), 0.0);
+  max_vertex_load_ = rest_bound_;
 }
 
 template <bool kForces>
@@ -104,12 +108,18 @@ double MembraneTerm::evaluate(const Vec3List& x, Vec3List* f) {
       const double t = 0.5 * (face.abar_inv(0, 0) * a11 + 2 * face.abar_inv(0, 1) * a12 +
                               face.abar_inv(1, 1) * a22);
       const double d = (a11 * a22 - a12 * a12) * face.abar_inv.determinant();
-      max_stretch_sq = std::max(max_stretch_sq, t + std::sqrt(std::max(0.0, t * t - d)));
+      const double lambda2 = t + std::sqrt(std::max(0.0, t * t - d));
+      max_stretch_sq = std::max(max_stretch_sq, lambda2);
+      const double load = std::max(1.0, 0.5 * (3.0 * lambda2 - 1.0)) * face_lambda_[k];
+      face_load_[3 * k] = face_load_[3 * k + 1] = face_load_[3 * k + 2] = load;
     }
   }
   if constexpr (kForces) {
     plan_.gather_add(face_force_, *f);
     max_stretch_sq_ = max_stretch_sq;
+    plan_.gather_set(face_load_, vertex_load_);
+    max_vertex_load_ = 0.0;
+    for (double w : vertex_load_) max_vertex_load_ = std::max(max_vertex_load_, w);
   }
   return ordered_sum(face_energy_);
 }
@@ -126,7 +136,8 @@ double MembraneTerm::omega_max_sq(double vertex_mass) const {
   // Rest bound, scaled by the StVK tangent stiffness ratio at stretch lambda:
   // d^2/d lambda^2 of (lambda^2 - 1)^2 / 8 is (3 lambda^2 - 1) / 2 (1 at rest).
   const double s = std::max(1.0, 0.5 * (3.0 * max_stretch_sq_ - 1.0));
-  return s * rest_bound_ / vertex_mass;
+  // Per-vertex loads (see the header); never above the global s * rest_bound_.
+  return std::min(s * rest_bound_, max_vertex_load_) / vertex_mass;
 }
 
 }  // namespace wirepack

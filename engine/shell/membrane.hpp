@@ -26,6 +26,9 @@ class MembraneTerm : public ShellTerm {
   // seen at the last accumulate() (StVK stiffens in tension; at rest s = 1). Against the
   // largest eigenvalue of the FD stiffness (test_membrane): 1.6x at rest and at 10 %
   // dilation, 2.4x at random +-20 % strains.
+  // Per vertex (Engine V): omega_max^2 <= max_v sum_{f at v} s_f lambda_f / m with each face's
+  // own stretch factor s_f (the same Rayleigh-quotient argument face by face), so one
+  // over-stretched face raises the bound at its vertices only, not everywhere.
   double omega_max_sq(double vertex_mass) const override;
 
   // max over vertices of sum over the faces at the vertex of lambda_f, the largest eigenvalue
@@ -55,6 +58,10 @@ class MembraneTerm : public ShellTerm {
   ScatterPlan plan_;
   Vec3List face_force_;
   std::vector<double> face_energy_;
+  std::vector<double> face_lambda_;  // lambda_f, largest eigenvalue of the face's rest stiffness
+  std::vector<double> face_load_;    // (3 nf) s_f lambda_f per slot at the last accumulate [N/m]
+  std::vector<double> vertex_load_;  // (nv) sum over the faces at each vertex [N/m]
+  double max_vertex_load_ = 0.0;     // [N/m]
 };
 
 }  // namespace wirepack

@@ -42,6 +42,16 @@ void ScatterPlan::gather_set(const Vec3List& values, Vec3List& out) const {
   }
 }
 
+void ScatterPlan::gather_set(const std::vector<double>& values, std::vector<double>& out) const {
+  const int nt = static_cast<int>(start_.size()) - 1;
+#pragma omp parallel for schedule(static)
+  for (int t = 0; t < nt; ++t) {
+    double sum = 0.0;
+    for (int k = start_[t]; k < start_[t + 1]; ++k) sum += values[slot_[k]];
+    out[t] = sum;
+  }
+}
+
 double ordered_sum(const std::vector<double>& v) {
   double s = 0.0;
   for (double x : v) s += x;

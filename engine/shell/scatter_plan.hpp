@@ -24,6 +24,7 @@ class ScatterPlan {
   void gather_add(const Vec3List& values, Vec3List& out) const;
   // out[t] = sum of its slots (from zero, in the same order).
   void gather_set(const Vec3List& values, Vec3List& out) const;
+  void gather_set(const std::vector<double>& values, std::vector<double>& out) const;
 
  private:
   int width_ = 0;
