@@ -252,9 +252,9 @@ int main(int argc, char** argv) {
       "run every (grid point, seed) of a sweep file as parallel runs into one directory; "
       "rerunning resumes (finished runs are kept)");
   sweep->add_option("sweep", sweep_args.path,
-                    "sweep file (JSON); without one, the embedded default sweep (rigid sphere, "
-                    "rho = 20, mu_s = 0, 0.5, 1, 2 seeds, l_max = 20; see "
-                    "scenes/default.sweep.json)");
+                    "sweep file (JSON); without one, the embedded default sweep (elastic "
+                    "shell, rho = 20, xi = 10, eps = 1e3, mu_s = 0, 0.1, 0.25, 0.5, 2 seeds, "
+                    "l_max = 14; see scenes/default.sweep.json)");
   sweep->add_option("-o,--out", sweep_args.out,
                     "sweep directory (default sweeps/NAME, NAME from the sweep file)");
   sweep->add_option("-j,--threads", sweep_args.threads, "concurrent runs (default: all cores)")

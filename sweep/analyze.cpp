@@ -898,6 +898,10 @@ struct Samples {
   std::vector<double> kappa2;  // kappa^2 / <kappa^2>, pooled over the runs
   std::vector<double> loops;   // Lambda / r, pooled
   std::size_t runs = 0;        // runs with a snapshot at l
+  // The packing of the first of those runs: its wire and shell vertices (none if rigid) at l
+  // [m], the cavity radius R [m].
+  std::vector<std::array<double, 3>> wire, shell;
+  double R = NaN;
 };
 
 std::vector<Samples> distribution_samples(const fs::path& dir, const Analysis& a) {
@@ -918,6 +922,11 @@ std::vector<Samples> distribution_samples(const fs::path& dir, const Analysis& a
       for (const auto& p : rec.snapshots[*k].wire) x.emplace_back(p[0], p[1], p[2]);
       const double wire_r = number_at(r->config, "/wire/radius");
       Samples& s = out[i];
+      if (s.runs == 0) {
+        s.wire = rec.snapshots[*k].wire;
+        s.shell = rec.snapshots[*k].shell_vertices;
+        s.R = number_at(r->config, "/rho") * wire_r;
+      }
       ++s.runs;
       const auto k2 = analysis::normalized_squared_curvature(x);
       s.kappa2.insert(s.kappa2.end(), k2.begin(), k2.end());
@@ -1141,6 +1150,42 @@ PlotJob distribution_plot(const Analysis& a, std::size_t i, const std::array<Dis
   return job;
 }
 
+// The packing of grid point i at the distribution l (first run with a snapshot there): the wire
+// seen from the pole (x, y) and from the side (x, z) in units of R, over the elastic shell's
+// vertices (grey dots), or in the rigid sphere's circle.
+std::optional<PlotJob> packing_plot(const Analysis& a, std::size_t i, const Samples& s) {
+  using plots::Curve;
+  if (s.wire.empty() || !(s.R > 0)) return std::nullopt;
+  std::vector<plots::Panel> panels;
+  for (const int k : {1, 2}) {
+    plots::Panel panel;
+    panel.title = k == 1 ? "from the north pole" : "from the side (the hole at the bottom)";
+    panel.xlabel = "x / R";
+    panel.ylabel = k == 1 ? "y / R" : "z / R";
+    panel.key = "off";
+    panel.equal_axes = true;
+    Curve cavity{"", s.shell.empty() ? Curve::Style::Lines : Curve::Style::Dots, {}};
+    for (const auto& p : s.shell) cavity.rows.push_back({p[0] / s.R, p[k] / s.R, NaN});
+    for (int t = 0; s.shell.empty() && t <= 120; ++t) {
+      const double phi = 2.0 * std::numbers::pi * t / 120;
+      cavity.rows.push_back({std::cos(phi), std::sin(phi), NaN});
+    }
+    Curve wire{"", Curve::Style::Lines, {}};
+    for (const auto& p : s.wire) wire.rows.push_back({p[0] / s.R, p[k] / s.R, NaN});
+    panel.curves = {cavity, wire};
+    panels.push_back(std::move(panel));
+  }
+  PlotJob job;
+  job.name = "packing_" + point_tag(i, a.points.size());
+  job.script = plots::script(
+      "The packing of grid point " + std::to_string(i) + " at l = " + num(a.distribution_l) +
+          " (the first run with a snapshot there), two projections, over the shell",
+      "point " + std::to_string(i) + " at l = " + num(a.distribution_l) + ": " +
+          describe(a.points[i], a.axes.empty() ? a.params : a.axes),
+      panels, 1, 2, job.name + ".png", 1000, 520);
+  return job;
+}
+
 // Removes files of an earlier analysis that this one did not write (another grid, no gnuplot).
 void remove_stale(const fs::path& dir, const std::set<std::string>& keep,
                   const std::vector<std::string>& prefixes) {
@@ -1291,6 +1336,7 @@ AnalyzeResult analyze_sweep(const AnalyzeOptions& o) {
     if (a.points[i].complete.empty()) continue;
     jobs.push_back(scaling_plot(a, i, series[i], fits[i]));
     jobs.push_back(distribution_plot(a, i, dists[i]));
+    if (auto job = packing_plot(a, i, samples[i])) jobs.push_back(std::move(*job));
   }
   const fs::path plot_dir = out / "plots";
   const std::string gnuplot = plots::find_program(o.gnuplot);
@@ -1312,7 +1358,7 @@ AnalyzeResult analyze_sweep(const AnalyzeOptions& o) {
       kept.insert(png + ".log");
     }
   }
-  remove_stale(plot_dir, kept, {"D_vs_", "scaling_p", "distributions_p", "phase_"});
+  remove_stale(plot_dir, kept, {"D_vs_", "scaling_p", "distributions_p", "phase_", "packing_p"});
   if (o.gnuplot.empty())
     result.plot_notice = "plots not drawn (--no-plots); gnuplot scripts in " + plot_dir.string();
   else if (gnuplot.empty())

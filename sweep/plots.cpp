@@ -58,6 +58,8 @@ std::string style_text(Curve::Style s) {
       return "using 1:2 with lines linewidth 2";
     case Curve::Style::Boxes:
       return "using 1:2:3 with boxes fill solid 0.3 border";
+    case Curve::Style::Dots:
+      return "using 1:2 with points pointtype 7 pointsize 0.25 linecolor rgb \"#b8b8b8\"";
   }
   return "";
 }
@@ -114,6 +116,7 @@ std::string script(const std::string& comment, const std::string& page_title,
     // Margins inside the frame, so points at the ends of the range stay visible.
     if (panel.y_from_zero)
       s << "set yrange [0:*]\nset offsets graph 0.03, graph 0.03, graph 0.05, 0\n";
+    if (panel.equal_axes) s << "set size ratio -1\n";
     s << "plot ";
     for (std::size_t k = 0; k < drawn.size(); ++k) {
       const Curve& c = panel.curves[drawn[k]];

@@ -15,6 +15,7 @@ struct Curve {
     Points,      // rows (x, y, -)
     Lines,       // rows (x, y, -)
     Boxes,       // rows (x centre, y, box width): a histogram
+    Dots,        // rows (x, y, -): small grey points (a shell's vertices under a packing)
   };
   std::string title;  // key entry ("" = none)
   Style style = Style::Points;
@@ -25,6 +26,7 @@ struct Panel {
   std::string title, xlabel, ylabel;
   bool logx = false, logy = false;
   bool y_from_zero = false;      // y range starts at 0
+  bool equal_axes = false;       // one unit is as long on x as on y (pictures of packings)
   std::string key = "top left";  // where the key goes (gnuplot `set key` position)
   std::vector<Curve> curves;
 };

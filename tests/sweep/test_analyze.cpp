@@ -5,6 +5,7 @@
 // determinism, and bad input.
 #include "sweep/analyze.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -415,7 +416,14 @@ TEST_F(Analyze, FullRunWritesEveryFileWithOneHeaderRowDeterministically) {
   // Scripts are written without gnuplot; the notice says why there are no PNGs.
   EXPECT_TRUE(r.plots.empty());
   EXPECT_NE(r.plot_notice.find("not found"), std::string::npos);
-  EXPECT_EQ(r.scripts.size(), 5u);  // D_vs_mu_s, scaling and distributions of 2 points
+  // D_vs_mu_s; scaling, distributions and packing of 2 points
+  EXPECT_EQ(r.scripts.size(), 7u);
+  const auto packing = std::find_if(r.scripts.begin(), r.scripts.end(), [](const std::string& s) {
+    return s.find("packing_p0.gp") != std::string::npos;
+  });
+  ASSERT_NE(packing, r.scripts.end());
+  // The picture draws the wire of the snapshot in units of R (rigid: the circle of radius 1).
+  EXPECT_NE(read_text(*packing).find("set size ratio -1"), std::string::npos);
   for (const auto& s : r.scripts) EXPECT_TRUE(fs::exists(s)) << s;
   // No temporary files left.
   for (const auto& e : fs::recursive_directory_iterator(dir_ / "analysis"))
@@ -432,7 +440,7 @@ TEST_F(Analyze, FullRunWritesEveryFileWithOneHeaderRowDeterministically) {
   const AnalyzeResult p = analyze_sweep(with_plots);
   if (p.plot_notice.find("not found") != std::string::npos) GTEST_SKIP() << p.plot_notice;
   EXPECT_EQ(p.plot_notice, "");
-  ASSERT_EQ(p.plots.size(), 5u);
+  ASSERT_EQ(p.plots.size(), 7u);
   for (const auto& png : p.plots) {
     ASSERT_TRUE(fs::exists(png)) << png;
     EXPECT_EQ(read_text(png).substr(1, 3), "PNG");

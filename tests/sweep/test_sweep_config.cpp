@@ -290,12 +290,13 @@ TEST(SweepConfig, EmbeddedDefaultSweepIsTheSceneFile) {
   EXPECT_EQ(canonical_json(file), canonical_json(default_sweep_json()));
   const Sweep sw = parse_sweep(default_sweep_json(), "<default>");
   EXPECT_EQ(sw.name, "default");
-  ASSERT_EQ(sw.runs.size(), 3u * 2u);
+  ASSERT_EQ(sw.runs.size(), 4u * 2u);
   for (const auto& r : sw.runs) {
     EXPECT_EQ(r.scene.engine.rho, 20);
-    EXPECT_EQ(r.scene.engine.l_max, 20);
+    EXPECT_EQ(r.scene.engine.shell, ShellKind::Elastic);
+    EXPECT_EQ(r.scene.engine.l_max, 14);
   }
-  EXPECT_EQ(sw.runs.back().scene.engine.mu_s, 1.0);
+  EXPECT_EQ(sw.runs.back().scene.engine.mu_s, 0.5);
 }
 
 TEST(SweepConfig, ExpectedCostFollowsTheWork) {
