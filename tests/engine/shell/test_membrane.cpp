@@ -11,21 +11,13 @@
 #include "engine/fd_harness.hpp"
 #include "engine/shell/membrane.hpp"
 #include "engine/shell/mesh_builders.hpp"
+#include "engine/shell/shell_fixtures.hpp"
 #include "engine/shell/static_solve.hpp"
 
 namespace wirepack {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-// Paper shell: R = 10 mm, t = R / xi with xi = 10, E_s = E_w / eps with eps = 1e3, nu_s = 1/3.
-ShellMaterial paper_material() {
-  ShellMaterial m;
-  m.E = 1e6;
-  m.nu = 1.0 / 3.0;
-  m.t = 1e-3;
-  return m;
-}
 
 // Central differences of term.energy in every coordinate at steps h * length_scale; error
 // max |f + dU/dx| / max |f| (same report as the rod harness).
@@ -56,13 +48,8 @@ testing::FdReport fd_check_shell(ShellTerm& term, const Vec3List& x0, double len
   return rep;
 }
 
-Vec3List perturbed(const Vec3List& x, double amplitude, unsigned seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  Vec3List y = x;
-  for (Vec3& p : y) p += amplitude * Vec3(u(rng), u(rng), u(rng));
-  return y;
-}
+using testing::paper_material;
+using testing::perturbed;
 
 double total_area(const ShellMesh& m) {
   double a = 0.0;

@@ -13,26 +13,14 @@
 #include "engine/shell/membrane.hpp"
 #include "engine/shell/mesh_builders.hpp"
 #include "engine/shell/scatter_plan.hpp"
+#include "engine/shell/shell_fixtures.hpp"
 #include "engine/simulation.hpp"
 
 namespace wirepack {
 namespace {
 
-ShellMaterial paper_material() {
-  ShellMaterial m;
-  m.E = 1e6;
-  m.nu = 1.0 / 3.0;
-  m.t = 1e-3;
-  return m;
-}
-
-Vec3List perturbed(const Vec3List& x, double amplitude, unsigned seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  Vec3List y = x;
-  for (Vec3& p : y) p += amplitude * Vec3(u(rng), u(rng), u(rng));
-  return y;
-}
+using testing::paper_material;
+using testing::perturbed;
 
 // Runs f with n OpenMP threads, restoring the setting after.
 template <class F>
