@@ -1,5 +1,6 @@
-// Coil cross-section radii R_t, R_x, R_y (paper Fig. 1f, DESIGN §4): extreme-value estimates of
-// the bundle's outline, combined by a least-squares fit of the half-ellipse's support function.
+// Coil cross-section radii R_t, R_x, R_y (paper Fig. 1f, docs/design.md §5.4): extreme-value
+// estimates of the bundle's outline, combined by a least-squares fit of the half-ellipse's
+// support function.
 //
 // Coordinates: axis m = turning_axis over chords of ~1/8 turn (the turns' common binormal; unlike
 // the coil normal it stays the coil axis for bundles taller than wide), through the

@@ -1,7 +1,7 @@
 #pragma once
-// Distributions of the paper's section "Hierarchic disorder" (DESIGN §4): the normalised local
-// squared curvature kappa^2 / <kappa^2> and the loop lengths Lambda between neighbouring maxima of
-// kappa^2 along the wire; both are fitted by lognormals (stats.hpp: fit_lognormal).
+// Distributions of the paper's section "Hierarchic disorder" (docs/design.md §5.6): the normalised
+// local squared curvature kappa^2 / <kappa^2> and the loop lengths Lambda between neighbouring
+// maxima of kappa^2 along the wire; both are fitted by lognormals (stats.hpp: fit_lognormal).
 #include <vector>
 
 #include "analysis/observables.hpp"

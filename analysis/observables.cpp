@@ -1,4 +1,4 @@
-// Observables of a wire centerline (DESIGN §4): Voronoi lengths, discrete curvature, total
+// Observables of a wire centerline (docs/design.md §5): Voronoi lengths, discrete curvature, total
 // curvature K, coil normal, turning axis, order parameter S, D, and the scaled bending energy.
 // The coil cross-section fit (R_t, R_x, R_y) is in coil_radii.cpp.
 #include <algorithm>
@@ -62,8 +62,8 @@ std::vector<double> voronoi_lengths(Centerline x) {
   return ell;
 }
 
-// DESIGN §4: kappa_i = 2 tan(phi_i / 2) / ell_i at interior nodes, 0 at the ends and wherever an
-// adjacent edge has zero length (n) [1/m].
+// docs/design.md §5.1: kappa_i = 2 tan(phi_i / 2) / ell_i at interior nodes, 0 at the ends and
+// wherever an adjacent edge has zero length (n) [1/m].
 std::vector<double> curvatures(Centerline x) {
   std::vector<double> kappa(x.size(), 0.0);
   const std::vector<double> ell = voronoi_lengths(x);
@@ -86,8 +86,9 @@ double total_curvature(Centerline x) {
   return K;
 }
 
-// DESIGN §4 axis: smallest-eigenvalue eigenvector of G = sum ell_i (x_i - xbar)(x_i - xbar)^T,
-// xbar the length-weighted centroid. +z when the wire has no length (n < 2 or all nodes equal).
+// The axis of docs/design.md §5.3: smallest-eigenvalue eigenvector of
+// G = sum ell_i (x_i - xbar)(x_i - xbar)^T, xbar the length-weighted centroid. +z when the wire
+// has no length (n < 2 or all nodes equal).
 Vec3 coil_normal(Centerline x) {
   const std::vector<double> ell = voronoi_lengths(x);
   double L = 0;
@@ -131,7 +132,7 @@ Vec3 turning_axis(Centerline x, std::size_t stride) {
   return canonical_sign(eig.eigenvectors().col(2).normalized());
 }
 
-// Paper "Order-disorder transition" with the DESIGN §4 axis n = coil_normal:
+// Paper "Order-disorder transition" with the axis of docs/design.md §5.3, n = coil_normal:
 // S = (1/L) sum_i ell_i sgn(n . (t_{i-1} x t_i)) over interior nodes, L = sum of those ell_i.
 // A node with (numerically) zero turning, or a zero-length adjacent edge, contributes 0 to the sum
 // but its ell_i to L. Fewer than 3 nodes, or no length, give S = 0, D = 1 (no turning at all).

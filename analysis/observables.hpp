@@ -1,6 +1,6 @@
 #pragma once
-// Observables of a wire configuration (DESIGN §4). Pure functions of the centerline: nodes in
-// order along the wire [m], any number n >= 0 (degenerate inputs give documented zeros).
+// Observables of a wire configuration (docs/design.md §5). Pure functions of the centerline: nodes
+// in order along the wire [m], any number n >= 0 (degenerate inputs give documented zeros).
 #include <cstddef>
 #include <span>
 #include <vector>
@@ -39,12 +39,12 @@ Order order_parameter(Centerline x);
 // Paper: U_b_hat = U_b r^2 / (R E_w I).
 double bending_energy_hat(double U_b, double r, double R, double E_w);
 
-// Coil cross-section (DESIGN §4): in cylindrical coordinates about the turning axis (through the
-// turning-weighted centroid), the bundle is fitted by two half-ellipses y >= R_t with semi-axes
-// R_x (axial) and R_y (radial). The radii describe the material envelope (the wire's surface:
-// centerline extremes + wire_radius), R_t being the innermost wire surface. Radii in metres;
-// ok = false when the wire makes less than one net turn about the axis or the fit degenerates
-// (see coil_radii.cpp).
+// Coil cross-section (docs/design.md §5.4): in cylindrical coordinates about the turning axis
+// (through the turning-weighted centroid), the bundle is fitted by two half-ellipses y >= R_t with
+// semi-axes R_x (axial) and R_y (radial). The radii describe the material envelope (the wire's
+// surface: centerline extremes + wire_radius), R_t being the innermost wire surface. Radii in
+// metres; ok = false when the wire makes less than one net turn about the axis or the fit
+// degenerates (see coil_radii.cpp).
 struct CoilRadii {
   double R_t = 0, R_x = 0, R_y = 0;
   bool ok = false;

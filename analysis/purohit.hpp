@@ -1,6 +1,6 @@
 #pragma once
-// Coil model after Purohit et al. (paper Eqs. 4-7, DESIGN §4): the wire winds about the coil
-// axis x with its binormal along x, filling a toroidal bundle whose cross-section is two
+// Coil model after Purohit et al. (paper Eqs. 4-7, docs/design.md §5.5): the wire winds about the
+// coil axis x with its binormal along x, filling a toroidal bundle whose cross-section is two
 // half-ellipses y >= R_t (semi-axes R_x axial, R_y radial) with strands a distance d apart in a
 // hexagonal lattice. At radius y the bundle holds w(y) = 2 R_x sqrt(1 - ((y - R_t)/R_y)^2) / d
 // windings along x, and 2 / (sqrt(3) d) such layers per unit radius. Predicts the bending energy

@@ -1,5 +1,5 @@
 #pragma once
-// Statistics for the analysis of sweeps (DESIGN §4 observables, paper "Quantitative comparison"
+// Statistics for the analysis of sweeps (docs/design.md §5.8, paper "Quantitative comparison"
 // and "Hierarchic disorder"): mean and standard error over seeds, power-law fits y ~ l^p with
 // their standard errors (OLS and a bootstrap over seeds), lognormal fits and normalised
 // histograms. Pure functions; NaN marks "not available".

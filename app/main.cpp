@@ -1,4 +1,4 @@
-// The wirepack executable (DESIGN §6): subcommands wire the layers together.
+// The wirepack executable (docs/design.md §1): subcommands wire the layers together.
 // Exit codes: 0 success, 2 bad input (nothing is written), 1 a run failed.
 #include <unistd.h>
 
@@ -111,8 +111,8 @@ struct SweepArgs {
   bool retry_failed = false;
 };
 
-// DESIGN §6: exit 0 when every run of the shard is complete, 1 when any failed (a summary on
-// stderr), 2 on bad input before anything is written. The manifest's path goes to stdout.
+// docs/design.md §6.2: exit 0 when every run of the shard is complete, 1 when any failed (a summary
+// on stderr), 2 on bad input before anything is written. The manifest's path goes to stdout.
 int cmd_sweep(const SweepArgs& a) {
   const Sweep sweep = a.path.empty() ? parse_sweep(default_sweep_json(), "<embedded default sweep>")
                                      : load_sweep(a.path);
@@ -145,7 +145,7 @@ int cmd_sweep(const SweepArgs& a) {
   return o.failed > 0 ? kRunFailed : kOk;
 }
 
-// DESIGN §6: CSV tables and plots of a sweep directory. Skipped runs (failed, missing,
+// docs/design.md §4.6: CSV tables and plots of a sweep directory. Skipped runs (failed, missing,
 // unreadable) and plot notices go to stderr; where the CSV and plots are goes to stdout.
 int cmd_analyze(const AnalyzeOptions& opt) {
   const AnalyzeResult r = analyze_sweep(opt);

@@ -1,9 +1,9 @@
 #pragma once
 // Constant-speed injection through the hole at the south pole (paper, section "Model";
-// DESIGN §3). The wire outside the hole is a short kinematic guide on the feed axis (+z) moving
-// at speed v; a guide node is released (becomes dynamic) once it passes the plane of the hole's
-// rim, and a new guide node is added at the tail, so only the injected wire plus the guide is
-// simulated. At the start a few nodes are already inside, with a small random transverse
+// docs/design.md §2.7). The wire outside the hole is a short kinematic guide on the feed axis (+z)
+// moving at speed v; a guide node is released (becomes dynamic) once it passes the plane of the
+// hole's rim, and a new guide node is added at the tail, so only the injected wire plus the guide
+// is simulated. At the start a few nodes are already inside, with a small random transverse
 // deflection drawn from the run's seed to break the rotational symmetry about the feed axis.
 // A perfectly straight wire would keep that symmetry once the initial deflection has relaxed
 // and, pushed head-on into the wall, overshoot its Euler load by an order of magnitude before

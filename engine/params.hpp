@@ -6,8 +6,8 @@
 namespace wirepack {
 
 enum class ShellKind { Rigid, Elastic };
-// An effect a scene may leave out (DESIGN §3, effects on demand). Auto: on where the scene
-// has it (twist: iff friction is on, mu_s > 0, since only friction applies torques about the
+// An effect a scene may leave out (docs/design.md §2.8, effects on demand). Auto: on where the
+// scene has it (twist: iff friction is on, mu_s > 0, since only friction applies torques about the
 // centerline; shell self-contact: iff the shell is elastic, since a rigid sphere cannot fold).
 enum class EffectMode { Auto, On, Off };
 // Mass model of the wire (integrate/wire_mass.hpp): every mode at the scaled density (uniform),

@@ -1,7 +1,7 @@
 #pragma once
-// Validated parameters -> the set of effects this scene needs (DESIGN §3, effects on demand).
-// A rigid shell builds no mesh; mu_s = 0 builds no friction; twist DOFs exist only when the
-// scene's twist mode asks for them. The cost of an effect that is off is zero because it is
+// Validated parameters -> the set of effects this scene needs (docs/design.md §2.8, effects on
+// demand). A rigid shell builds no mesh; mu_s = 0 builds no friction; twist DOFs exist only when
+// the scene's twist mode asks for them. The cost of an effect that is off is zero because it is
 // simply not in the list.
 #include <memory>
 #include <vector>

@@ -1,6 +1,6 @@
 #pragma once
 // One energy term of a scene (stretch, bend, twist, a contact type, ...). A scene is a list of
-// terms; an effect that is off is simply not in the list (DESIGN §3, effects on demand).
+// terms; an effect that is off is simply not in the list (docs/design.md §2.8, effects on demand).
 #include <string>
 
 #include "engine/rod/rod_state.hpp"

@@ -1,9 +1,9 @@
 #pragma once
-// `wirepack analyze DIR` (DESIGN §4-6): reads the run files of a sweep directory and writes tidy
-// CSV tables (one header row each) and gnuplot plots. A grid point is a resolved scene minus its
-// seed and its output settings; runs of one point differ only in the seed and are averaged
-// (mean, SEM = s / sqrt(n), s with n - 1). Only complete runs enter the statistics; failed,
-// missing (never run, or a .part leftover of a killed run) and unreadable ones are listed.
+// `wirepack analyze DIR` (docs/design.md §4.6, §5.8): reads the run files of a sweep directory and
+// writes tidy CSV tables (one header row each) and gnuplot plots. A grid point is a resolved scene
+// minus its seed and its output settings; runs of one point differ only in the seed and are
+// averaged (mean, SEM = s / sqrt(n), s with n - 1). Only complete runs enter the statistics;
+// failed, missing (never run, or a .part leftover of a killed run) and unreadable ones are listed.
 //
 // Outputs, in OUT (default DIR/analysis), each written to a temporary name and renamed:
 //   runs.csv           one row per run: parameters, seed, status, D over the D window, l reached,

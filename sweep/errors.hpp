@@ -1,5 +1,5 @@
 #pragma once
-// Bad user input (scene or sweep files, command-line arguments): exit code 2 (DESIGN §6).
+// Bad user input (scene or sweep files, command-line arguments): exit code 2 (docs/design.md §6.2).
 // Each message reads `FILE: /json/pointer: rule broken`; what() is all of them, one per line.
 #include <stdexcept>
 #include <string>

@@ -14,7 +14,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Writes `text` to `path` through `path.tmp` and a rename (STYLE §9).
+// Writes `text` to `path` through `path.tmp` and a rename (docs/design.md §6.3).
 void write_text_file(const std::string& path, const std::string& text) {
   const std::string tmp = path + ".tmp";
   {

@@ -1,5 +1,5 @@
 #pragma once
-// `wirepack export` (DESIGN §5, §6): a run file's series as CSV, its snapshots as an XDMF
+// `wirepack export` (docs/design.md §4.7): a run file's series as CSV, its snapshots as an XDMF
 // sidecar for ParaView. Both are written to a temporary name and renamed when complete.
 #include <string>
 

@@ -38,7 +38,7 @@ enum Column {
   kColumns
 };
 
-// Names per Column (DESIGN §4); the array size ties them to the enum.
+// Names per Column (docs/design.md §5.7); the array size ties them to the enum.
 constexpr std::array<const char*, kColumns> kNames = {
     "l", "U_b_hat", "U_b", "U_t", "U_s", "U_m", "U_sb", "E_kin",  "K",
     "N", "S",       "D",   "R_t", "R_x", "R_y", "dt",   "wall_s", "steps"};
@@ -58,7 +58,7 @@ class Recorder {
     for (const auto& name : series_names()) record_.series.push_back({name, {}});
   }
 
-  // One row of every series (DESIGN §4) from the current state.
+  // One row of every series (docs/design.md §5.7) from the current state.
   void row(const Simulation& sim, double wall) {
     const SceneParams& p = scene_.engine;
     const auto x = sim.inside_nodes();

@@ -1,5 +1,5 @@
 #pragma once
-// The run loop (DESIGN §4, §5): one validated scene -> one Simulation -> one run file.
+// The run loop (docs/design.md §4.3, §5): one validated scene -> one Simulation -> one run file.
 #include <functional>
 #include <ostream>
 #include <string>

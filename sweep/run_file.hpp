@@ -1,6 +1,6 @@
 #pragma once
-// The run file (DESIGN §5): one HDF5 file per run. Root attributes status, failure, config,
-// version, git, started, finished; /series/<name> 1-D float64 datasets in recording order;
+// The run file (docs/design.md §4.3): one HDF5 file per run. Root attributes status, failure,
+// config, version, git, started, finished; /series/<name> 1-D float64 datasets in recording order;
 // /snapshots/<k>/{wire, curvature, shell_vertices, shell_triangles} with attribute l.
 // Written as PATH.part and renamed to PATH once fully written and closed.
 #include <array>
@@ -32,7 +32,7 @@ struct Snapshot {
 };
 
 struct Series {
-  std::string name;            // observable name (DESIGN §4), e.g. "U_b_hat"
+  std::string name;            // observable name (docs/design.md §5.7), e.g. "U_b_hat"
   std::vector<double> values;  // one value per recorded row
 };
 

@@ -23,7 +23,7 @@ double num(const json& v) {
 
 }  // namespace
 
-// The scene schema (DESIGN §2). Order: documentation order; /shell is read first anyway.
+// The scene schema (docs/design.md §4.1). Order: documentation order; /shell is read first anyway.
 const std::vector<KeySpec>& scene_schema() {
   static const std::vector<KeySpec> table = {
       {.pointer = "/rho",

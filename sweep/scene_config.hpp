@@ -1,5 +1,5 @@
 #pragma once
-// Strict scene config (DESIGN §2, STYLE §8): one table of (JSON pointer, type, default,
+// Strict scene config (docs/design.md §4.1): one table of (JSON pointer, type, default,
 // range, doc) drives validation, default filling, `wirepack validate` and the schema in the
 // README. Errors are collected and thrown together as one InputError.
 #include <optional>

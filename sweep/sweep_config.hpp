@@ -1,5 +1,6 @@
 #pragma once
-// Sweep file (DESIGN §5): {"name", "base": {scene}, "grid": {"<key or JSON pointer>": [values]},
+// Sweep file (docs/design.md §4.4):
+// {"name", "base": {scene}, "grid": {"<key or JSON pointer>": [values]},
 // "points": [{"<key>": value, ...}], "seeds": 10 | [list], "analysis": {...}}. The points are
 // the Cartesian product of the grid's axes, then the listed points (each sets every axis); each
 // point runs with every seed; every (point, seed) is one scene validated by parse_scene, errors

@@ -1,7 +1,7 @@
 #pragma once
-// What a sweep directory records besides the run files (DESIGN §5): the manifest (the resolved
-// sweep and every run with its status), the joblog (one CSV line per run attempt), the shard
-// a process works on, and the lock that keeps two processes off the same shard.
+// What a sweep directory records besides the run files (docs/design.md §4.5): the manifest (the
+// resolved sweep and every run with its status), the joblog (one CSV line per run attempt), the
+// shard a process works on, and the lock that keeps two processes off the same shard.
 //
 // Concurrency: a process only ever writes files named after its own shard, so shards of one
 // sweep can share a directory on any file system (NFS and Lustre included) without file locks:

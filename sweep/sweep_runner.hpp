@@ -1,6 +1,6 @@
 #pragma once
-// The sweep driver (DESIGN §5, §6): runs every (point, seed) of a sweep shard as an OpenMP task,
-// longest expected first, each into its own run file; resumes from what is on disk.
+// The sweep driver (docs/design.md §4.5, §3.6): runs every (point, seed) of a sweep shard as an
+// OpenMP task, longest expected first, each into its own run file; resumes from what is on disk.
 #include <cstddef>
 #include <ostream>
 #include <string>
@@ -40,7 +40,7 @@ struct SweepOutcome {
 // Creates DIR and DIR/runs; throws InputError when that is impossible or DIR is not writable.
 void prepare_sweep_dir(const std::string& dir);
 
-// Runs the shard's runs that are not finished on disk (DESIGN §5):
+// Runs the shard's runs that are not finished on disk (docs/design.md §4.5):
 // - resume: a run whose final file exists and says "complete" is kept; "failed" is kept unless
 //   retry_failed; a `.part` leftover is removed and the run redone; a file that cannot be read
 //   or holds another config is redone. Manifest temporaries a killed invocation left

@@ -1,6 +1,6 @@
 #pragma once
-// Coulomb friction with true stick-slip (Cundall & Strack 1979; DESIGN §3), one mechanism for
-// every contact type (wire-wire, wire-wall, and later wire-shell, shell-shell).
+// Coulomb friction with true stick-slip (Cundall & Strack 1979; docs/design.md §2.6), one mechanism
+// for every contact type (wire-wire, wire-wall, and later wire-shell, shell-shell).
 //
 // Each contact keeps a tangential force F_t in a history keyed by the pair of elements. Every
 // step F_t is rotated into the current tangent plane (keeping its magnitude) and incremented by

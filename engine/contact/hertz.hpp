@@ -1,5 +1,5 @@
 #pragma once
-// Hertz's law for the normal contact force in the overlap delta (DESIGN §3):
+// Hertz's law for the normal contact force in the overlap delta (docs/design.md §2.6):
 //   F = 4/3 E* sqrt(R*) delta^{3/2},  U = 8/15 E* sqrt(R*) delta^{5/2},  dF/ddelta = 3/2 F / delta,
 // with 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 and an effective radius R* per pair type.
 #include <algorithm>

@@ -56,7 +56,7 @@ class SelfContactTerm : public Term {
   double energy(const RodState& s) override;
   double omega_max_sq(const RodInertia& inertia) const override;
 
-  // N of DESIGN §4: touching edge pairs.
+  // N of docs/design.md §5.2: touching edge pairs.
   int contacts() const { return static_cast<int>(contacts_.size()); }
   const std::vector<WireContact>& contact_list() const { return contacts_; }
   void begin_trial(double dt) override {

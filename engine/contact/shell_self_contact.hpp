@@ -1,6 +1,6 @@
 #pragma once
-// Shell-shell (self-)contact of the elastic shell, Engine III (DESIGN §3): two pieces of the
-// shell, each a slab of thickness t = 2 h around its mid-surface, touch where their
+// Shell-shell (self-)contact of the elastic shell, Engine III (docs/design.md §2.6): two pieces of
+// the shell, each a slab of thickness t = 2 h around its mid-surface, touch where their
 // mid-surfaces come closer than t. Only for scenes whose shell can fold onto itself.
 //
 // Pairs. Vertex-triangle (VT: a vertex against the other piece's faces) and edge-edge (EE: two

@@ -1,6 +1,6 @@
 #pragma once
 // Subcritical viscous damping that keeps the injected wire close to static equilibrium
-// without resisting the injection itself (paper, section "Model"; DESIGN §3):
+// without resisting the injection itself (paper, section "Model"; docs/design.md §3.4):
 //  - transverse: F_i = -gamma m (v_i - (v_i . tau_i) tau_i) with tau_i the node tangent, so a
 //    wire sliding along its own axis (as it does when fed into a coil) feels no drag, while
 //    sideways motion is damped at gamma = 2 zeta omega_0, omega_0 = sqrt(E I / (rho A R^4)) the

@@ -1,6 +1,6 @@
 #pragma once
 // Explicit second-order predictor-corrector with adaptive time step (paper, section "Model";
-// DESIGN §3). One force evaluation per step:
+// docs/design.md §3.1). One force evaluation per step:
 //   predict  x' = x + dt v + dt^2/2 a,   v* = v + dt a           (same for theta, omega)
 //   evaluate a' = a(x', v*)
 //   correct  v' = v + dt/2 (a + a')

@@ -1,5 +1,5 @@
 #pragma once
-// Bending energy of the Kirchhoff-Love shell (paper Eq. (2)-(3), DESIGN §3): the change
+// Bending energy of the Kirchhoff-Love shell (paper Eq. (2)-(3), docs/design.md §2.3): the change
 // beta = bbar - b of a discrete second fundamental form per triangle,
 //   U_sb = sum_f 1/2 Abar_f B H^{ijkl} beta_ij beta_kl
 //        = sum_f B/2 Abar_f [nu tr(S)^2 + (1 - nu) tr(S^2)],   S = abar^{-1} (b - bbar),

@@ -1,7 +1,7 @@
 #pragma once
 // Builders of shell meshes: the paper's sphere with a clamped hole at the south pole (an
 // icosahedral geodesic mesh, spring-relaxed to near-uniform triangles), a closed sphere, a
-// flat clamped square for plate tests; and mesh quality figures (DESIGN §3, issue 4).
+// flat clamped square for plate tests; and mesh quality figures (docs/design.md §2.4, issue 4).
 #include "engine/shell/shell_term.hpp"
 
 namespace wirepack {

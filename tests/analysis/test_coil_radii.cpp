@@ -1,4 +1,4 @@
-// Tests for coil_radii (DESIGN §4 coil cross-section, paper Fig. 1f): synthetic toroidal bundles
+// Tests for coil_radii (docs/design.md §5.4, paper Fig. 1f): synthetic toroidal bundles
 // of known material radii R_t, R_x, R_y, hexagonally packed with node noise, at nine shapes;
 // a hexagonal lattice clipped at random offsets (its envelope lies inside the nominal one by the
 // lattice gaps); invariance under a rigid motion; wires that are not coils.

@@ -1,7 +1,7 @@
-// Tests for the centerline observables of DESIGN §4: Voronoi lengths, discrete curvature, total
-// curvature K (with its O(1/n^2) convergence on a circle), coil normal and turning axis, the order
-// parameter S, D on coils, spirals, a figure-eight, helices and straight wires, invariance under
-// rigid motions, degenerate inputs, and the scaled bending energy.
+// Tests for the centerline observables of docs/design.md §5: Voronoi lengths, discrete curvature,
+// total curvature K (with its O(1/n^2) convergence on a circle), coil normal and turning axis, the
+// order parameter S, D on coils, spirals, a figure-eight, helices and straight wires, invariance
+// under rigid motions, degenerate inputs, and the scaled bending energy.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -131,9 +131,10 @@ TEST(CoilNormal, PlanarCoilInXyPlaneIsPlusZ) {
 }
 
 TEST(CoilNormal, TallHelixTipsIntoThePlaneWhileTurningAxisStays) {
-  // Documented limitation of the DESIGN §4 axis: a helix taller than wide (height^2 / 12 >
-  // a^2 / 2) has its smallest gyration eigenvalue in the plane, so n is in-plane and D ~ 1 (the
-  // sign of n . b_i alternates every half turn). The turning axis is z whatever the height.
+  // Documented limitation of the axis of docs/design.md §5.3: a helix taller than wide
+  // (height^2 / 12 > a^2 / 2) has its smallest gyration eigenvalue in the plane, so n is
+  // in-plane and D ~ 1 (the sign of n . b_i alternates every half turn). The turning axis is z
+  // whatever the height.
   // Height 20, a = 1; n leans out of the plane by ~cov(y, z) / var(z) = 0.005 only.
   const auto x = helix(1.0, 1.0, 20, 64);
   EXPECT_LT(std::abs(coil_normal(x).z()), 0.02);

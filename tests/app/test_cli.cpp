@@ -1,5 +1,5 @@
-// The wirepack executable end to end (DESIGN §6): exit codes, messages, nothing written on
-// bad input, a short real run and its export.
+// The wirepack executable end to end (docs/design.md §6.2): exit codes, messages, nothing written
+// on bad input, a short real run and its export.
 #include <sys/wait.h>
 
 #include <cstdlib>

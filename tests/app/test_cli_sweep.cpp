@@ -1,5 +1,5 @@
-// `wirepack sweep` and `wirepack validate` on sweep files, end to end (DESIGN §6): exit codes,
-// nothing written on bad input, resume after SIGKILL, shards from SLURM's environment.
+// `wirepack sweep` and `wirepack validate` on sweep files, end to end (docs/design.md §6.2, §4.5):
+// exit codes, nothing written on bad input, resume after SIGKILL, shards from SLURM's environment.
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/wait.h>

@@ -1,7 +1,7 @@
 #pragma once
-// One finite-difference harness for every energy term (STYLE §3): compares the generalised
-// forces from Term::accumulate with central differences of Term::energy over several step
-// sizes, so a test sees the error trend (O(h^2) until round-off) and not one lucky number.
+// One finite-difference harness for every energy term (docs/design.md §6.5): compares the
+// generalised forces from Term::accumulate with central differences of Term::energy over several
+// step sizes, so a test sees the error trend (O(h^2) until round-off) and not one lucky number.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

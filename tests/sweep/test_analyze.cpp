@@ -1,8 +1,8 @@
-// `wirepack analyze` (DESIGN §4-6) on a hand-made sweep directory: two grid points (mu_s = 0 and
-// 0.5) x three seeds, written with write_run_file from synthetic series and snapshots, one run
-// failed. Checks grouping, n, mean and SEM exactly, the listing of skipped runs, the documented
-// headers, recovery of synthetic power laws, NaN radii, the Purohit columns, the distributions,
-// determinism, and bad input.
+// `wirepack analyze` (docs/design.md §4.6, §5.8) on a hand-made sweep directory: two grid points
+// (mu_s = 0 and 0.5) x three seeds, written with write_run_file from synthetic series and
+// snapshots, one run failed. Checks grouping, n, mean and SEM exactly, the listing of skipped runs,
+// the documented headers, recovery of synthetic power laws, NaN radii, the Purohit columns, the
+// distributions, determinism, and bad input.
 #include "sweep/analyze.hpp"
 
 #include <algorithm>

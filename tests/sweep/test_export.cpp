@@ -1,4 +1,4 @@
-// CSV and XDMF export of a run file (DESIGN §5).
+// CSV and XDMF export of a run file (docs/design.md §4.7).
 #include "sweep/export.hpp"
 
 #include <filesystem>

@@ -1,4 +1,5 @@
-// The run loop: a short rigid-shell run end to end, and a run that fails (DESIGN §4, §5).
+// The run loop (docs/design.md §4.3, §5.7): a short rigid-shell run end to end, and a run that
+// fails.
 #include "sweep/run.hpp"
 
 #include <cmath>

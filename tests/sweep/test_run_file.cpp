@@ -1,4 +1,4 @@
-// Run file (DESIGN §5): write/read round trip, write-then-rename, failures leave nothing.
+// Run file (docs/design.md §4.3): write/read round trip, write-then-rename, failures leave nothing.
 #include "sweep/run_file.hpp"
 
 #include <unistd.h>

@@ -1,4 +1,5 @@
-// Strict scene config: defaults, every kind of malformed input, error collection (DESIGN §2).
+// Strict scene config (docs/design.md §4.1): defaults, every kind of malformed input, error
+// collection.
 #include "sweep/scene_config.hpp"
 
 #include <cmath>

@@ -1,5 +1,5 @@
-// Sweep files (DESIGN §5): grid expansion (counts, order, ids, file names), strict validation
-// with the sweep file's own pointers, the embedded default sweep, the cost model.
+// Sweep files (docs/design.md §4.4): grid expansion (counts, order, ids, file names), strict
+// validation with the sweep file's own pointers, the embedded default sweep, the cost model.
 #include "sweep/sweep_config.hpp"
 
 #include <set>

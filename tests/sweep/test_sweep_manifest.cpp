@@ -1,4 +1,4 @@
-// Sweep bookkeeping (DESIGN §5): shards, SLURM job-array defaults, the manifest document,
+// Sweep bookkeeping (docs/design.md §4.5): shards, SLURM job-array defaults, the manifest document,
 // atomic writes, the joblog CSV and the per-shard lock.
 #include "sweep/sweep_manifest.hpp"
 

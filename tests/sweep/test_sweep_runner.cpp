@@ -1,6 +1,6 @@
-// The sweep driver (DESIGN §5): runs, records, resume, failure isolation, shards, determinism
-// across thread counts, longest-first order. Tiny rigid scenes (rho = 10, l <= 5, elements of
-// 1 mm) keep each run in the 10 ms range.
+// The sweep driver (docs/design.md §4.5, §3.6): runs, records, resume, failure isolation, shards,
+// determinism across thread counts, longest-first order. Tiny rigid scenes (rho = 10, l <= 5,
+// elements of 1 mm) keep each run in the 10 ms range.
 #include "sweep/sweep_runner.hpp"
 
 #include <cmath>

@@ -1,6 +1,6 @@
 // SphereWallTerm: wire nodes against the inside of a rigid sphere with an entrance hole at the
-// south pole. FD gradient, Hertz's law (paper/DESIGN §3: F = 4/3 E* sqrt(R*) delta^{3/2} with
-// R* = r R / (R - r)), the hole and its rim, guide nodes, the contact count and the dashpot.
+// south pole. FD gradient, Hertz's law (paper; docs/design.md §2.5: F = 4/3 E* sqrt(R*) delta^{3/2}
+// with R* = r R / (R - r)), the hole and its rim, guide nodes, the contact count and the dashpot.
 #include "engine/contact/sphere_wall.hpp"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Finite-difference checks of the rod energies at random states (STYLE §3).
+// Finite-difference checks of the rod energies at random states (docs/design.md §6.5).
 #include <gtest/gtest.h>
 
 #include "engine/fd_harness.hpp"

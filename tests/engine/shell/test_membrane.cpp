@@ -1,6 +1,6 @@
 // Membrane term (paper Eqs. (2)-(3), M part): finite-difference gradient, rigid motions,
 // analytic energies (uniform dilation, uniaxial stretch), the pressurised sphere and the
-// explicit step's stiffness bound against the FD stiffness (STYLE §3).
+// explicit step's stiffness bound against the FD stiffness (docs/design.md §3.2, §6.5).
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>

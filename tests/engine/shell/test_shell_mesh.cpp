@@ -1,5 +1,5 @@
 // Shell meshes: topology (Euler characteristic, orientation, edge/face tables), the sphere
-// with its clamped hole, the flat square, and the quality figures we reach (DESIGN §3).
+// with its clamped hole, the flat square, and the quality figures we reach (docs/design.md §2.4).
 #include <gtest/gtest.h>
 
 #include <cmath>
