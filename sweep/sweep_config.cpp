@@ -554,19 +554,18 @@ const json& default_sweep_json() {
   // The default preset with a shell mesh of 3 r (not 2 r) and l up to 14 keep it within a few
   // minutes on 2 cores; D is maximised over l in [8, 14], after the bifurcation at l ~ 6.5
   // (below l ~ 8 the wire's entry chord gives a coil D ~ 1 / l, README "Analysis").
-  static const json j = {
-      {"name", "default"},
-      {"base",
-       {{"rho", 20},
-        {"xi", 10},
-        {"eps", 1000},
-        {"shell", "elastic"},
-        {"l_max", 14},
-        {"numerics", {{"preset", "default"}, {"shell_mesh_size", 0.0015}}},
-        {"output", {{"snapshots_every_l", 2}}}}},
-      {"grid", {{"mu_s", {0, 0.1, 0.25, 0.5}}}},
-      {"seeds", 2},
-      {"analysis", {{"D_window", {8, 14}}}}};
+  static const json j = {{"name", "default"},
+                         {"base",
+                          {{"rho", 20},
+                           {"xi", 10},
+                           {"eps", 1000},
+                           {"shell", "elastic"},
+                           {"l_max", 14},
+                           {"numerics", {{"preset", "default"}, {"shell_mesh_size", 0.0015}}},
+                           {"output", {{"snapshots_every_l", 2}}}}},
+                         {"grid", {{"mu_s", {0, 0.1, 0.25, 0.5}}}},
+                         {"seeds", 2},
+                         {"analysis", {{"D_window", {8, 14}}}}};
   return j;
 }
 
