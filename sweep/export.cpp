@@ -154,8 +154,8 @@ void export_xdmf(const std::string& run_file, const std::string& xmf_path) {
       x << "        <Grid Name=\"shell\" GridType=\"Uniform\">\n"
         << "          <Topology TopologyType=\"Triangle\" NumberOfElements=\"" << f << "\">\n"
         << "            <DataItem Dimensions=\"" << f
-        << " 3\" NumberType=\"Int\" Precision=\"4\" Format=\"HDF\">" << h5 << ':' << snap
-        << "/shell_triangles</DataItem>\n"
+        << " 3\" NumberType=\"Int\" Precision=\"4\" Format=\"HDF\">" << h5 << ':'
+        << shell_triangles_path(r, k) << "</DataItem>\n"
         << "          </Topology>\n"
         << "          <Geometry GeometryType=\"XYZ\">\n"
         << "            <DataItem Dimensions=\"" << m

@@ -12,7 +12,8 @@ void export_csv(const std::string& run_file, const std::string& csv_path);
 
 // XDMF 3 temporal collection, one time step (Time = l) per snapshot: the wire as a Polyline
 // with node attribute `curvature` and, where the snapshot has one, the shell as a triangle
-// mesh. Heavy data stay in the run file, referenced by its path relative to the .xmf file.
+// mesh. Heavy data stay in the run file, referenced by its path relative to the .xmf file; a
+// mesh shared by all snapshots (run file layout 2) is referenced once, at /shell_triangles.
 void export_xdmf(const std::string& run_file, const std::string& xmf_path);
 
 }  // namespace wirepack::sweep

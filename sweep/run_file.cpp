@@ -60,6 +60,29 @@ Series* RunRecord::find_series(const std::string& name) {
   return nullptr;
 }
 
+namespace {
+
+// The run's mesh, stored once as /shell_triangles: the first snapshot's non-empty triangles.
+const std::vector<std::array<int, 3>>* shared_triangles(const RunRecord& r) {
+  for (const auto& s : r.snapshots)
+    if (!s.shell_triangles.empty()) return &s.shell_triangles;
+  return nullptr;
+}
+
+// Whether snapshot `s` is stored with the shared mesh (a hard link to /shell_triangles).
+bool uses_shared_triangles(const RunRecord& r, const Snapshot& s) {
+  const auto* shared = shared_triangles(r);
+  return shared && s.shell_triangles == *shared;
+}
+
+}  // namespace
+
+std::string shell_triangles_path(const RunRecord& r, std::size_t k) {
+  if (r.layout >= 2 && k < r.snapshots.size() && uses_shared_triangles(r, r.snapshots[k]))
+    return "/shell_triangles";
+  return "/snapshots/" + std::to_string(k) + "/shell_triangles";
+}
+
 std::mutex& hdf5_mutex() {
   static std::mutex m;
   return m;
@@ -167,13 +190,56 @@ void write_double_attr(hid_t loc, const std::string& name, double value) {
   check(H5Awrite(attr.get(), H5T_NATIVE_DOUBLE, &value), "write attribute " + name);
 }
 
-// Creates a dataset of shape `dims` (rank 1 or 2) and writes `data` (row-major).
+void write_int_attr(hid_t loc, const std::string& name, int value) {
+  Handle space(H5Screate(H5S_SCALAR), H5Sclose, "create scalar dataspace");
+  Handle attr(H5Acreate2(loc, name.c_str(), H5T_STD_I32LE, space.get(), H5P_DEFAULT, H5P_DEFAULT),
+              H5Aclose, "create attribute " + name);
+  check(H5Awrite(attr.get(), H5T_NATIVE_INT, &value), "write attribute " + name);
+}
+
+// ---- storage: chunked and compressed where it pays ----
+
+// Below 32 KiB a chunk index costs more than deflate saves on float64 coordinates (measured).
+constexpr hsize_t kCompressMinBytes = 1 << 15;  // smaller datasets stay contiguous [bytes]
+constexpr hsize_t kChunkBytes = 1 << 18;        // largest chunk [bytes]
+constexpr unsigned kDeflateLevel = 4;           // zlib level, 1 (fastest) to 9 (smallest)
+
+// Whether this HDF5 library can write deflate-compressed datasets (zlib is optional in an HDF5
+// build; shuffle is always built in).
+bool deflate_encoder_available() {
+  unsigned config = 0;
+  const bool ok = H5Zfilter_avail(H5Z_FILTER_DEFLATE) > 0 &&
+                  H5Zget_filter_info(H5Z_FILTER_DEFLATE, &config) >= 0 &&
+                  (config & H5Z_FILTER_CONFIG_ENCODE_ENABLED) != 0;
+  H5Eclear2(H5E_DEFAULT);
+  return ok;
+}
+
+// Creation properties of a dataset of shape `dims` and `elem` bytes per value: chunked (at most
+// kChunkBytes a chunk) with shuffle + deflate if `compress` and it holds kCompressMinBytes or
+// more; contiguous otherwise (small or empty: HDF5 cannot chunk an empty fixed-size dataset).
+Handle dataset_plist(const std::vector<hsize_t>& dims, hsize_t elem, bool compress) {
+  Handle p(H5Pcreate(H5P_DATASET_CREATE), H5Pclose, "create dataset property list");
+  hsize_t row = elem;  // bytes per row
+  for (std::size_t d = 1; d < dims.size(); ++d) row *= dims[d];
+  if (!compress || dims[0] * row < kCompressMinBytes) return p;
+  std::vector<hsize_t> chunk = dims;
+  chunk[0] = std::clamp<hsize_t>(kChunkBytes / row, 1, dims[0]);
+  check(H5Pset_chunk(p.get(), static_cast<int>(chunk.size()), chunk.data()), "set chunk shape");
+  check(H5Pset_shuffle(p.get()), "add the shuffle filter");
+  check(H5Pset_deflate(p.get(), kDeflateLevel), "add the deflate filter");
+  return p;
+}
+
+// Creates a dataset of shape `dims` (rank 1 or 2), compressed if `compress` (dataset_plist),
+// and writes `data` (row-major).
 Handle write_dataset(hid_t loc, const std::string& name, hid_t file_type, hid_t mem_type,
-                     std::vector<hsize_t> dims, const void* data) {
+                     std::vector<hsize_t> dims, const void* data, bool compress) {
   Handle space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), H5Sclose,
                "create dataspace for " + name);
+  Handle dcpl = dataset_plist(dims, H5Tget_size(file_type), compress);
   Handle set(
-      H5Dcreate2(loc, name.c_str(), file_type, space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+      H5Dcreate2(loc, name.c_str(), file_type, space.get(), H5P_DEFAULT, dcpl.get(), H5P_DEFAULT),
       H5Dclose, "create dataset " + name);
   if (dims[0] > 0)
     check(H5Dwrite(set.get(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data),
@@ -189,6 +255,7 @@ std::vector<char> build_image(const RunRecord& r, const std::string& file_name) 
   check(H5Pset_fapl_core(fapl.get(), 1 << 20, 0), "select HDF5's in-memory driver");
   Handle file(H5Fcreate(file_name.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get()), H5Fclose,
               "create " + file_name);
+  const bool compress = deflate_encoder_available();
   {
     Handle root(H5Gopen2(file.get(), "/", H5P_DEFAULT), H5Gclose, "open /");
     write_string_attr(root.get(), "status", to_string(r.status));
@@ -198,6 +265,7 @@ std::vector<char> build_image(const RunRecord& r, const std::string& file_name) 
     write_string_attr(root.get(), "git", r.git);
     write_string_attr(root.get(), "started", r.started);
     write_string_attr(root.get(), "finished", r.finished);
+    write_int_attr(root.get(), "layout", kRunFileLayout);
 
     Handle series = create_group(file.get(), "series");
     for (const auto& s : r.series) {
@@ -206,8 +274,14 @@ std::vector<char> build_image(const RunRecord& r, const std::string& file_name) 
                            " values, series " + r.series.front().name + " has " +
                            std::to_string(r.series.front().values.size()));
       write_dataset(series.get(), s.name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {s.values.size()},
-                    s.values.data());
+                    s.values.data(), compress);
     }
+
+    // The mesh does not change during a run: stored once, hard-linked into the snapshots.
+    const auto* shared = shared_triangles(r);
+    if (shared)
+      write_dataset(root.get(), "shell_triangles", H5T_STD_I32LE, H5T_NATIVE_INT,
+                    {shared->size(), 3}, shared->data(), compress);
 
     Handle snaps = create_group(file.get(), "snapshots");
     for (std::size_t k = 0; k < r.snapshots.size(); ++k) {
@@ -219,15 +293,21 @@ std::vector<char> build_image(const RunRecord& r, const std::string& file_name) 
       Handle g = create_group(snaps.get(), std::to_string(k));
       write_double_attr(g.get(), "l", s.l);
       Handle wire = write_dataset(g.get(), "wire", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE,
-                                  {s.wire.size(), 3}, s.wire.data());
+                                  {s.wire.size(), 3}, s.wire.data(), compress);
       write_double_attr(wire.get(), "l", s.l);
       write_dataset(g.get(), "curvature", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {s.curvature.size()},
-                    s.curvature.data());
+                    s.curvature.data(), compress);
       if (!s.shell_vertices.empty() || !s.shell_triangles.empty()) {
         write_dataset(g.get(), "shell_vertices", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE,
-                      {s.shell_vertices.size(), 3}, s.shell_vertices.data());
-        write_dataset(g.get(), "shell_triangles", H5T_STD_I32LE, H5T_NATIVE_INT,
-                      {s.shell_triangles.size(), 3}, s.shell_triangles.data());
+                      {s.shell_vertices.size(), 3}, s.shell_vertices.data(), compress);
+        // A hard link keeps /snapshots/<k>/shell_triangles valid for every reader.
+        if (uses_shared_triangles(r, s))
+          check(H5Lcreate_hard(root.get(), "shell_triangles", g.get(), "shell_triangles",
+                               H5P_DEFAULT, H5P_DEFAULT),
+                "link shell_triangles into snapshot " + std::to_string(k));
+        else
+          write_dataset(g.get(), "shell_triangles", H5T_STD_I32LE, H5T_NATIVE_INT,
+                        {s.shell_triangles.size(), 3}, s.shell_triangles.data(), compress);
       }
     }
   }
@@ -297,6 +377,16 @@ double read_double_attr(hid_t loc, const std::string& name) {
   Handle attr(H5Aopen(loc, name.c_str(), H5P_DEFAULT), H5Aclose, "open attribute " + name);
   double v = 0;
   check(H5Aread(attr.get(), H5T_NATIVE_DOUBLE, &v), "read attribute " + name);
+  return v;
+}
+
+int read_int_attr(hid_t loc, const std::string& name) {
+  Handle attr(H5Aopen(loc, name.c_str(), H5P_DEFAULT), H5Aclose, "open attribute " + name);
+  Handle ftype(H5Aget_type(attr.get()), H5Tclose, "type of attribute " + name);
+  if (H5Tget_class(ftype.get()) != H5T_INTEGER)
+    throw RunFileError("attribute " + name + " is not an integer");
+  int v = 0;
+  check(H5Aread(attr.get(), H5T_NATIVE_INT, &v), "read attribute " + name);
   return v;
 }
 
@@ -405,6 +495,12 @@ RunRecord read_record(const std::string& path) {
   r.started = opt("started");
   r.finished = opt("finished");
   check_version(r.version);
+  // Layout 1 (files from before the attribute) keeps the triangles in every snapshot.
+  r.layout = has_attr(root.get(), "layout") ? read_int_attr(root.get(), "layout") : 1;
+  if (r.layout < 1 || r.layout > kRunFileLayout)
+    throw RunFileError("run file layout " + std::to_string(r.layout) +
+                       " is unknown to this wirepack " + build_version() + " (it reads 1 to " +
+                       std::to_string(kRunFileLayout) + ")");
 
   // Every run file has /series (with at least l, all of one length) and /snapshots, even a
   // run that failed at its first step; a file without them is not one wirepack wrote whole.
@@ -422,6 +518,12 @@ RunRecord read_record(const std::string& path) {
                            " values, /series/" + r.series.front().name + " has " +
                            std::to_string(r.series.front().values.size()));
   }
+  // Layout 2: the mesh, for snapshots that have vertices but no triangles of their own (each
+  // normally has a hard link to it, read like a dataset of its own).
+  std::vector<std::array<int, 3>> shared;
+  const bool has_shared = has_link(file.get(), "shell_triangles");
+  if (has_shared)
+    shared = read_dataset<std::array<int, 3>>(file.get(), "shell_triangles", H5T_NATIVE_INT, 3);
   {
     Handle g(H5Gopen2(file.get(), "snapshots", H5P_DEFAULT), H5Gclose, "open /snapshots");
     auto names = member_names(g.get());
@@ -442,6 +544,8 @@ RunRecord read_record(const std::string& path) {
       if (has_link(sg.get(), "shell_triangles"))
         s.shell_triangles =
             read_dataset<std::array<int, 3>>(sg.get(), "shell_triangles", H5T_NATIVE_INT, 3);
+      else if (has_shared && has_link(sg.get(), "shell_vertices"))
+        s.shell_triangles = shared;
       r.snapshots.push_back(std::move(s));
     }
   }

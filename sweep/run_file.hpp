@@ -1,7 +1,11 @@
 #pragma once
 // The run file (docs/design.md §4.3): one HDF5 file per run. Root attributes status, failure,
-// config, version, git, started, finished; /series/<name> 1-D float64 datasets in recording order;
-// /snapshots/<k>/{wire, curvature, shell_vertices, shell_triangles} with attribute l.
+// config, version, git, started, finished, layout; /series/<name> 1-D float64 datasets in
+// recording order; /snapshots/<k>/{wire, curvature, shell_vertices, shell_triangles} with
+// attribute l. Layout 2: datasets of 32 KiB or more chunked and compressed (shuffle + deflate)
+// where the HDF5 library can, the shell's triangles stored once as /shell_triangles and
+// hard-linked into every snapshot whose mesh it is. Layout 1 (no attribute layout): a triangle
+// dataset in every snapshot; still read.
 // Written as PATH.part and renamed to PATH once fully written and closed.
 #include <array>
 #include <mutex>
@@ -47,11 +51,22 @@ struct RunRecord {
   std::string finished;        // ISO-8601 UTC, "" while running
   std::vector<Series> series;  // columns in recording order, all of equal length
   std::vector<Snapshot> snapshots;
+  // Layout of the file read (1: triangles in every snapshot, 2: shared /shell_triangles);
+  // write_run_file always writes kRunFileLayout and ignores this.
+  int layout = 2;
 
   // The series called `name`, or nullptr.
   const Series* find_series(const std::string& name) const;
   Series* find_series(const std::string& name);
 };
+
+// The run file layout write_run_file writes, and the newest read_run_file reads.
+inline constexpr int kRunFileLayout = 2;
+
+// HDF5 path of snapshot k's shell triangles in the file `r` was read from (or is written to):
+// "/shell_triangles" where the snapshot shares the run's mesh in a layout 2 file, else
+// "/snapshots/<k>/shell_triangles" (the snapshot's own dataset; in layout 2 also a hard link).
+std::string shell_triangles_path(const RunRecord& r, std::size_t k);
 
 // The version and git hash of this build (for RunRecord::version, git).
 std::string build_version();
@@ -61,15 +76,16 @@ std::string build_git();
 // several threads at once). write_run_file and read_run_file take it themselves.
 std::mutex& hdf5_mutex();
 
-// Builds the file in memory, writes it to `path + ".part"` (one write, fsync) and renames that
-// to `path`. On failure (a full disk: "No space left on device", a file-size limit: "File too
-// large") the .part file is removed and RunFileError is thrown; an existing `path` is then left
-// untouched.
+// Builds the file in memory (layout kRunFileLayout; uncompressed if the library has no deflate
+// encoder), writes it to `path + ".part"` (one write, fsync) and renames that to `path`. On failure
+// (a full disk: "No space left on device", a file-size limit: "File too large") the .part file is
+// removed and RunFileError is thrown; an existing `path` is then left untouched.
 void write_run_file(const RunRecord& record, const std::string& path);
 // Reads a run file written by write_run_file. Throws RunFileError, with the path and the
-// reason: not HDF5, truncated, written by a newer wirepack (attribute `version`), a required
-// part missing (attributes status and config, groups /series and /snapshots, /series/l) or
-// series of unequal lengths.
+// reason: not HDF5, truncated, written by a newer wirepack (attribute `version`) or in an
+// unknown layout (attribute `layout`), a required part missing (attributes status and config,
+// groups /series and /snapshots, /series/l) or series of unequal lengths. Reads layouts 1 and 2.
+// Every snapshot comes back with its own copy of the triangles, wherever the file keeps them.
 RunRecord read_run_file(const std::string& path);
 
 }  // namespace wirepack::sweep

@@ -6,14 +6,17 @@
 #include <sstream>
 
 #include <gtest/gtest.h>
+#include <hdf5.h>
 
 #include "sweep/run_file.hpp"
+#include "sweep/run_file_fixture.hpp"
 #include "sweep/temp_dir.hpp"
 
 namespace wirepack::sweep {
 namespace {
 
 namespace fs = std::filesystem;
+using wirepack::testing::kLayout1Fixture;
 using wirepack::testing::read_text;
 using wirepack::testing::TempDir;
 
@@ -85,9 +88,63 @@ TEST(Export, XdmfWithShell) {
   const std::string x = read_text(dir / "run.xmf");
   EXPECT_EQ(count(x, "<Time "), 3u);
   EXPECT_EQ(count(x, "TopologyType=\"Triangle\""), 3u);
-  EXPECT_NE(x.find(">run.h5:/snapshots/1/shell_triangles<"), std::string::npos);
+  EXPECT_EQ(count(x, ">run.h5:/shell_triangles<"), 3u);  // the mesh, stored once
   EXPECT_NE(x.find(">run.h5:/snapshots/1/shell_vertices<"), std::string::npos);
   EXPECT_EQ(count(x, "<Grid "), count(x, "</Grid>"));
+}
+
+// Checks that every Format="HDF" DataItem of the .xmf file names a dataset of its run file
+// with the dimensions it states; returns how many there are.
+std::size_t check_hdf_items(const std::string& xmf) {
+  static const std::regex item(
+      R"re(<DataItem Dimensions="([0-9 ]+)"[^>]*Format="HDF">([^<:]+):([^<]+)</DataItem>)re");
+  const std::string x = read_text(xmf);
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  std::size_t n = 0;
+  for (std::sregex_iterator it(x.begin(), x.end(), item), end; it != end; ++it, ++n) {
+    const std::string dims = (*it)[1], h5 = (*it)[2], path = (*it)[3];
+    const std::string file_path = (fs::path(xmf).parent_path() / h5).string();
+    const hid_t file = H5Fopen(file_path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    EXPECT_GE(file, 0) << file_path;
+    if (file < 0) continue;
+    const hid_t set = H5Dopen2(file, path.c_str(), H5P_DEFAULT);
+    EXPECT_GE(set, 0) << h5 << ':' << path << " is not a dataset";
+    if (set >= 0) {
+      const hid_t space = H5Dget_space(set);
+      hsize_t d[2] = {0, 0};
+      const int rank = H5Sget_simple_extent_dims(space, d, nullptr);
+      EXPECT_EQ(
+          rank == 2 ? std::to_string(d[0]) + " " + std::to_string(d[1]) : std::to_string(d[0]),
+          dims)
+          << path;
+      H5Sclose(space);
+      H5Dclose(set);
+    }
+    H5Fclose(file);
+  }
+  return n;
+}
+
+TEST(Export, XdmfPathsExistInFile) {
+  TempDir dir;
+  RunRecord r = record(true);
+  r.snapshots[2].shell_triangles = {{0, 2, 1}};  // a mesh of its own
+  write_run_file(r, dir / "run.h5");
+  fs::create_directory(dir.path() / "view");
+  export_xdmf(dir / "run.h5", dir / "view/run.xmf");
+  const std::string x = read_text(dir / "view/run.xmf");
+  EXPECT_EQ(count(x, ">../run.h5:/shell_triangles<"), 2u);
+  EXPECT_EQ(count(x, ">../run.h5:/snapshots/2/shell_triangles<"), 1u);
+  // Per snapshot: wire, curvature, shell triangles and vertices.
+  EXPECT_EQ(check_hdf_items(dir / "view/run.xmf"), 12u);
+
+  // A layout 1 file: every snapshot's triangles in the snapshot.
+  fs::copy_file(std::string(WIREPACK_SOURCE_DIR) + "/" + kLayout1Fixture, dir / "old.h5");
+  export_xdmf(dir / "old.h5", dir / "old.xmf");
+  const std::string old = read_text(dir / "old.xmf");
+  EXPECT_EQ(count(old, ":/shell_triangles<"), 0u);
+  EXPECT_EQ(count(old, ">old.h5:/snapshots/1/shell_triangles<"), 1u);
+  EXPECT_EQ(check_hdf_items(dir / "old.xmf"), 12u);
 }
 
 TEST(Export, MissingRunFileThrows) {
