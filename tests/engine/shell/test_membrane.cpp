@@ -324,7 +324,8 @@ TEST(MembraneStep, OmegaBoundsTheLargestStiffnessEigenvalue) {
       std::printf("  state 3: global bound would be %.4g N/m (stretch factor %.2f)\n",
                   s * term.rest_stiffness_bound(), s);
       EXPECT_GT(s, 1.5);
-      EXPECT_LE(bound, s * term.rest_stiffness_bound());
+      // The per-vertex path is taken: strictly below the global bound (measured 5 % below).
+      EXPECT_LT(bound, 0.99 * s * term.rest_stiffness_bound());
     }
   }
 }
