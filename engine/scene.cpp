@@ -152,7 +152,7 @@ Assembly assemble(const SceneParams& p) {
       ShellSelfContactParams ss;
       ss.half_thickness = h;
       ss.E_star = effective_modulus(sm.E, sm.nu, sm.E, sm.nu);
-      ss.skin = SceneConstants::kSkin * r;
+      ss.skin = SceneConstants::kShellSelfSkin * r;
       ss.damping_ratio = zeta;
       ss.vertex_mass = m_min;
       ss.friction = fp;

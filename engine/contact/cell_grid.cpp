@@ -117,10 +117,37 @@ void CellGrid::scan(std::span<const Vec3> points, int split, double cutoff,
   for (int c = num_cells; c > 0; --c) cell_start_[c] = cell_start_[c - 1];
   cell_start_[0] = 0;
 
-  // Scan own cell (pairs a < b within it) and the 13 forward neighbours (all pairs).
   const double cutoff2 = cutoff * cutoff;  // [m^2]
-  // With two sets, a pair within one set is skipped (split < 0: one set, nothing skipped).
-  const auto same_set = [split](int i, int j) { return split >= 0 && (i < split) == (j < split); };
+  if (split >= 0) {
+    // Two sets: each point of the smaller set against the points of the other set in its own
+    // and its 26 neighbouring cells. Pairs within a set are never visited (a mesh's faces
+    // against each other outnumber the wire-mesh pairs many times over).
+    const bool first_small = split <= n - split;
+    const int from = first_small ? 0 : split, to = first_small ? split : n;
+    for (int i = from; i < to; ++i) {
+      const int c = cell_of_[i];
+      const int ix = c % nx, iy = (c / nx) % ny, iz = c / (nx * ny);
+      const Vec3& xi = points[i];
+      for (int jz = std::max(0, iz - 1); jz <= std::min(nz - 1, iz + 1); ++jz) {
+        for (int jy = std::max(0, iy - 1); jy <= std::min(ny - 1, iy + 1); ++jy) {
+          for (int jx = std::max(0, ix - 1); jx <= std::min(nx - 1, ix + 1); ++jx) {
+            const int cn = jx + nx * (jy + ny * jz);
+            for (int b = cell_start_[cn]; b < cell_start_[cn + 1]; ++b) {
+              const int j = sorted_[b];
+              if ((j < split) == first_small) continue;  // same set as i
+              if ((xi - points[j]).squaredNorm() < cutoff2) {
+                pairs.emplace_back(std::min(i, j), std::max(i, j));
+              }
+            }
+          }
+        }
+      }
+    }
+    sort_pairs(n, pairs);
+    return;
+  }
+
+  // One set: own cell (pairs a < b within it) and the 13 forward neighbours (all pairs).
   for (int iz = 0; iz < nz; ++iz) {
     for (int iy = 0; iy < ny; ++iy) {
       for (int ix = 0; ix < nx; ++ix) {
@@ -132,7 +159,6 @@ void CellGrid::scan(std::span<const Vec3> points, int split, double cutoff,
           const int i = sorted_[a];
           for (int b = a + 1; b < end; ++b) {
             const int j = sorted_[b];  // j > i: stable sort
-            if (same_set(i, j)) continue;
             if ((points[i] - points[j]).squaredNorm() < cutoff2) pairs.emplace_back(i, j);
           }
         }
@@ -149,7 +175,6 @@ void CellGrid::scan(std::span<const Vec3> points, int split, double cutoff,
             const Vec3& xi = points[i];
             for (int b = nbegin; b < nend; ++b) {
               const int j = sorted_[b];
-              if (same_set(i, j)) continue;
               if ((xi - points[j]).squaredNorm() < cutoff2) {
                 pairs.emplace_back(std::min(i, j), std::max(i, j));
               }
@@ -159,7 +184,10 @@ void CellGrid::scan(std::span<const Vec3> points, int split, double cutoff,
       }
     }
   }
+  sort_pairs(n, pairs);
+}
 
+void CellGrid::sort_pairs(int n, std::vector<std::pair<int, int>>& pairs) {
   // Deterministic (i, j) order, independent of the grid. A comparison sort of all pairs costs
   // several times the scan, so: LSD radix sort, a stable counting pass by j then one by i, each
   // O(pairs + n). The counts live in cell_start_ (free now) and the scratch half is the tail of

@@ -27,6 +27,8 @@ class CellGrid {
  private:
   void scan(std::span<const Vec3> points, int split, double cutoff,
             std::vector<std::pair<int, int>>& pairs);  // split < 0: every pair
+  // Sorts the pairs of n points by (i, j) (two stable counting passes, O(pairs + n)).
+  void sort_pairs(int n, std::vector<std::pair<int, int>>& pairs);
 
   std::vector<int> cell_start_;  // first sorted slot of each cell (num_cells + 1)
   std::vector<int> cell_of_;     // cell index of each point (n)

@@ -1,6 +1,7 @@
 #include "engine/contact/friction.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 namespace wirepack {
@@ -10,6 +11,56 @@ void FrictionHistory::finish_marking() {
   slipping_ = 0;
 }
 
+FrictionHistory::Entry* FrictionHistory::Table::find(std::uint64_t key) {
+  if (size_ == 0) return nullptr;
+  const std::size_t mask = keys_.size() - 1;
+  for (std::size_t i = slot(key);; i = (i + 1) & mask) {
+    if (keys_[i] == key) return &entries_[i];
+    if (keys_[i] == kEmpty) return nullptr;
+  }
+}
+
+FrictionHistory::Entry& FrictionHistory::Table::insert(std::uint64_t key, const Entry& e) {
+  if (2 * (size_ + 1) > keys_.size()) grow();
+  const std::size_t mask = keys_.size() - 1;
+  std::size_t i = slot(key);
+  while (keys_[i] != kEmpty) i = (i + 1) & mask;
+  keys_[i] = key;
+  entries_[i] = e;
+  ++size_;
+  return entries_[i];
+}
+
+void FrictionHistory::Table::grow() {
+  std::vector<std::uint64_t> keys = std::move(keys_);
+  std::vector<Entry> entries = std::move(entries_);
+  const std::size_t capacity = std::max<std::size_t>(64, 2 * keys.size());
+  keys_.assign(capacity, kEmpty);
+  entries_.assign(capacity, Entry{});
+  shift_ = 64 - std::countr_zero(capacity);
+  size_ = 0;
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    if (keys[i] != kEmpty) insert(keys[i], entries[i]);
+  }
+}
+
+template <class Keep>
+void FrictionHistory::Table::retain(Keep keep) {
+  // Rebuilt (instead of deletions with backward shifts): O(capacity), once per accepted step.
+  kept_keys_.clear();
+  kept_entries_.clear();
+  for (std::size_t i = 0; i < keys_.size(); ++i) {
+    if (keys_[i] != kEmpty && keep(entries_[i])) {
+      kept_keys_.push_back(keys_[i]);
+      kept_entries_.push_back(entries_[i]);
+    }
+  }
+  if (kept_keys_.size() == size_) return;  // nothing dropped: the table stands as it is
+  std::fill(keys_.begin(), keys_.end(), kEmpty);
+  size_ = 0;
+  for (std::size_t i = 0; i < kept_keys_.size(); ++i) insert(kept_keys_[i], kept_entries_[i]);
+}
+
 bool FrictionHistory::seen_this_trial(std::uint64_t key) const {
   return std::binary_search(seen_.begin(), seen_.end(), key);
 }
@@ -17,8 +68,8 @@ bool FrictionHistory::seen_this_trial(std::uint64_t key) const {
 Vec3 FrictionHistory::force(ContactKey k, const Vec3& n, double F_n, double k_n, const Vec3& v_rel,
                             double m_eff, const ContactKey* neighbours, int num_neighbours) {
   const std::uint64_t key = k.packed();
-  auto it = map_.find(key);
-  if (it == map_.end()) {
+  Entry* found = map_.find(key);
+  if (!found) {
     Entry e;
     // A new contact takes over the spring of a neighbouring pair whose contact has just
     // opened (the contact point moved across an element boundary); failing that, it starts
@@ -28,23 +79,23 @@ Vec3 FrictionHistory::force(ContactKey k, const Vec3& n, double F_n, double k_n,
     bool moved = false;
     for (int i = 0; i < num_neighbours && !moved; ++i) {
       const std::uint64_t nk = neighbours[i].packed();
-      const auto old = map_.find(nk);
-      if (old == map_.end()) continue;
+      const Entry* old = map_.find(nk);
+      if (!old) continue;
       if (!seen_this_trial(nk)) {
-        e.F = old->second.F;
-        e.sliding = old->second.sliding;
+        e.F = old->F;
+        e.sliding = old->sliding;
         moved = true;
       } else if (!still) {
-        still = &old->second;
+        still = old;
       }
     }
     if (!moved && still && still->Fn > 0.0) {
       e.F = still->F * (F_n / still->Fn);
       e.sliding = still->sliding;
     }
-    it = map_.emplace(key, e).first;
+    found = &map_.insert(key, e);
   }
-  Entry& e = it->second;
+  Entry& e = *found;
   // Rotate the committed force into the current tangent plane, keeping its magnitude.
   Vec3 F = e.F - e.F.dot(n) * n;
   const double old_mag = e.F.norm();
@@ -82,17 +133,13 @@ Vec3 FrictionHistory::force(ContactKey k, const Vec3& n, double F_n, double k_n,
 }
 
 void FrictionHistory::commit() {
-  for (auto it = map_.begin(); it != map_.end();) {
-    Entry& e = it->second;
-    if (e.trial != trial_) {
-      it = map_.erase(it);
-      continue;
-    }
+  map_.retain([this](Entry& e) {
+    if (e.trial != trial_) return false;  // not seen in the accepted step: the contact opened
     e.F = e.F_trial;
     e.sliding = e.sliding_trial;
     e.Fn = e.Fn_trial;
-    ++it;
-  }
+    return true;
+  });
 }
 
 }  // namespace wirepack

@@ -18,7 +18,6 @@
 // commit() makes the trial of the accepted step the new state and drops contacts that were not
 // seen in it; a rejected step is simply evaluated again.
 #include <cstdint>
-#include <unordered_map>
 #include <vector>
 
 #include "engine/types.hpp"
@@ -85,8 +84,34 @@ class FrictionHistory {
   };
   bool seen_this_trial(std::uint64_t key) const;
 
+  // Open-addressing hash table of the entries (linear probing, at most half full): one probe
+  // per lookup where a node-based map chased a pointer. Iteration order never matters (commit
+  // treats each entry alone), so the results equal those of any other map.
+  class Table {
+   public:
+    Entry* find(std::uint64_t key);
+    Entry& insert(std::uint64_t key, const Entry& e);  // key not present
+    // Keeps the entries for which keep(entry) is true (and may update them in place).
+    template <class Keep>
+    void retain(Keep keep);
+    std::size_t size() const { return size_; }
+
+   private:
+    static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};  // never a key: a >= 0
+    std::size_t slot(std::uint64_t key) const {
+      return static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> shift_);
+    }
+    void grow();
+    std::vector<std::uint64_t> keys_;
+    std::vector<Entry> entries_;
+    std::vector<std::uint64_t> kept_keys_;  // scratch of retain()
+    std::vector<Entry> kept_entries_;
+    std::size_t size_ = 0;
+    int shift_ = 64;
+  };
+
   FrictionParams p_;
-  std::unordered_map<std::uint64_t, Entry> map_;
+  Table map_;
   std::vector<std::uint64_t> seen_;  // sorted keys present in the current trial
   double dt_ = 0;
   long trial_ = 0;

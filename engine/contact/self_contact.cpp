@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "engine/contact/segment_distance.hpp"
 #include "engine/contact/verlet_slack.hpp"
@@ -48,11 +49,21 @@ void SelfContactTerm::rebuild(const RodState& s) {
   lmax = std::sqrt(lmax);
   const double reach = 2.0 * p_.r + p_.skin;
   grid_.find_pairs(midpoints_, lmax + reach, broad_);
-  for (const auto& [a, b] : broad_) {
+  // Distances in parallel (each pair its own entry), the list in the broad phase's order.
+  const int nb = static_cast<int>(broad_.size());
+  broad_geo_.resize(nb);
+#pragma omp parallel for schedule(static)
+  for (int k = 0; k < nb; ++k) {
+    const auto [a, b] = broad_[k];
     if (b - a <= exclude_) continue;
-    const SegmentClosest c = segment_segment_closest(s.x[a], s.x[a + 1], s.x[b], s.x[b + 1]);
-    if (c.dist2 >= reach * reach) continue;
-    candidates_.push_back(Candidate{a, b, quarter_slack2(c.dist2, 2.0 * p_.r, p_.r)});
+    broad_geo_[k] = segment_segment_closest(s.x[a], s.x[a + 1], s.x[b], s.x[b + 1]);
+  }
+  for (int k = 0; k < nb; ++k) {
+    const auto [a, b] = broad_[k];
+    if (b - a <= exclude_) continue;
+    const double dist2 = broad_geo_[k].dist2;
+    if (dist2 >= reach * reach) continue;
+    candidates_.push_back(Candidate{a, b, quarter_slack2(dist2, 2.0 * p_.r, p_.r)});
   }
 }
 
@@ -62,15 +73,26 @@ double SelfContactTerm::evaluate(const RodState& s, RodForces* out) {
   const double m_eff = 0.5 * p_.node_mass;
   double U = 0.0;
   contacts_.clear();
-  for (const Candidate& cand : candidates_) {
-    const int a = cand.a, b = cand.b;
+  // Closest points in parallel (each candidate its own entry); the forces below in order.
+  const int nc = static_cast<int>(candidates_.size());
+  geo_.resize(nc);
+#pragma omp parallel for schedule(static)
+  for (int k = 0; k < nc; ++k) {
+    const int a = candidates_[k].a, b = candidates_[k].b;
     // Cannot touch yet: each end moved less than half the slack since the build.
     const double moved2 =
         std::max(std::max(moved2_[a], moved2_[a + 1]), std::max(moved2_[b], moved2_[b + 1]));
-    if (moved2 < cand.slack2_4) continue;
-    const Vec3 &a0 = s.x[a], &a1 = s.x[a + 1], &b0 = s.x[b], &b1 = s.x[b + 1];
-    const SegmentClosest c = segment_segment_closest(a0, a1, b0, b1);
+    if (moved2 < candidates_[k].slack2_4) {
+      geo_[k].dist2 = std::numeric_limits<double>::infinity();
+      continue;
+    }
+    geo_[k] = segment_segment_closest(s.x[a], s.x[a + 1], s.x[b], s.x[b + 1]);
+  }
+  for (int k = 0; k < nc; ++k) {
+    const SegmentClosest& c = geo_[k];
     if (c.dist2 >= contact * contact) continue;
+    const int a = candidates_[k].a, b = candidates_[k].b;
+    const Vec3 &a0 = s.x[a], &a1 = s.x[a + 1], &b0 = s.x[b], &b1 = s.x[b + 1];
     const double dist = std::sqrt(c.dist2);
     Vec3 n;
     if (dist > 1e-12 * p_.r) {

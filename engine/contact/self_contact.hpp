@@ -92,6 +92,9 @@ class SelfContactTerm : public Term {
     double slack2_4;  // [m^2]
   };
   std::vector<Candidate> candidates_;
+  // Closest points per candidate of the last evaluation (dist2 infinite when skipped by its
+  // slack), and per broad-phase pair of the last build: computed in parallel, used in order.
+  std::vector<SegmentClosest> geo_, broad_geo_;
   Vec3List x_at_build_;
   std::vector<double> moved2_;  // |x - x_at_build|^2 per node at the last check [m^2]
   int edges_at_build_ = -1;

@@ -87,14 +87,23 @@ void WireShellTerm::rebuild(const RodState& s) {
   const double reach = Dc + p_.skin;
   grid_.find_pairs_between(points_, ne, 0.5 * lmax + face_reach_ + reach, broad_);
   // (wire edge, face) pairs within reach with their slack (verlet_slack.hpp), sorted by pair.
+  // Distances in parallel (one entry per broad pair), the list in the broad phase's order.
+  const int nb = static_cast<int>(broad_.size());
+  broad_dist2_.resize(nb);
+#pragma omp parallel for schedule(static)
+  for (int k = 0; k < nb; ++k) {
+    const auto [e, j] = broad_[k];  // (wire edge, ne + face): find_pairs_between
+    const auto& v = mesh_.faces[j - ne];
+    broad_dist2_[k] = segment_triangle_closest(s.x[e], s.x[e + 1], s.shell_x[v[0]], s.shell_x[v[1]],
+                                               s.shell_x[v[2]])
+                          .dist2;
+  }
   found_.clear();
-  for (const auto& [i, j] : broad_) {
-    if (i >= ne || j < ne) continue;  // only (wire edge, face) pairs
-    const int e = i, f = j - ne;
-    const auto& v = mesh_.faces[f];
-    const TriangleClosest c = segment_triangle_closest(s.x[e], s.x[e + 1], s.shell_x[v[0]],
-                                                       s.shell_x[v[1]], s.shell_x[v[2]]);
-    if (c.dist2 < reach * reach) found_.push_back({e, f, quarter_slack2(c.dist2, Dc, p_.r)});
+  for (int k = 0; k < nb; ++k) {
+    const double dist2 = broad_dist2_[k];
+    if (dist2 < reach * reach) {
+      found_.push_back({broad_[k].first, broad_[k].second - ne, quarter_slack2(dist2, Dc, p_.r)});
+    }
   }
   std::sort(found_.begin(), found_.end(),
             [](const auto& a, const auto& b) { return std::tie(a.e, a.f) < std::tie(b.e, b.f); });
@@ -117,16 +126,28 @@ void WireShellTerm::rebuild(const RodState& s) {
     std::sort(list->begin(), list->end());
     list->erase(std::unique(list->begin(), list->end()), list->end());
   }
-  // Slack of the correction pairs, from their distances at the build.
-  for (const auto& [e, k] : seg_edge_) {
-    const SegmentClosest c = segment_segment_closest(
-        s.x[e], s.x[e + 1], s.shell_x[mesh_.edges[k][0]], s.shell_x[mesh_.edges[k][1]]);
-    edge_slack2_4_.push_back(quarter_slack2(c.dist2, Dc, p_.r));
-  }
-  for (const auto& [e, vtx] : seg_vert_) {
-    const SegmentClosest c =
-        segment_segment_closest(s.x[e], s.x[e + 1], s.shell_x[vtx], s.shell_x[vtx]);
-    vert_slack2_4_.push_back(quarter_slack2(c.dist2, Dc, p_.r));
+  // Slack of the correction pairs, from their distances at the build (in parallel, one entry
+  // per pair).
+  const int n_edge = static_cast<int>(seg_edge_.size());
+  const int n_vert = static_cast<int>(seg_vert_.size());
+  edge_slack2_4_.resize(n_edge);
+  vert_slack2_4_.resize(n_vert);
+#pragma omp parallel
+  {
+#pragma omp for schedule(static)
+    for (int q = 0; q < n_edge; ++q) {
+      const auto [e, k] = seg_edge_[q];
+      const SegmentClosest c = segment_segment_closest(
+          s.x[e], s.x[e + 1], s.shell_x[mesh_.edges[k][0]], s.shell_x[mesh_.edges[k][1]]);
+      edge_slack2_4_[q] = quarter_slack2(c.dist2, Dc, p_.r);
+    }
+#pragma omp for schedule(static)
+    for (int q = 0; q < n_vert; ++q) {
+      const auto [e, vtx] = seg_vert_[q];
+      const SegmentClosest c =
+          segment_segment_closest(s.x[e], s.x[e + 1], s.shell_x[vtx], s.shell_x[vtx]);
+      vert_slack2_4_[q] = quarter_slack2(c.dist2, Dc, p_.r);
+    }
   }
   // Owners of each correction: the candidates (wire edge, face) of the faces around the shell
   // edge (its two faces in order) or vertex (its fan in order); -1 where a face is not a
@@ -166,48 +187,69 @@ double WireShellTerm::evaluate(const RodState& s, RodForces* out) {
   maybe_rebuild(s);
   const double Dc = p_.r + p_.half_thickness;
   const double m_eff = 1.0 / (1.0 / p_.node_mass + 1.0 / p_.vertex_mass);
-  double U = 0.0;
   face_pairs_.clear();
   max_overlap_ = 0.0;
 
-  // Applies one signed contact between wire point P (weights ww on wire nodes wi) and shell
-  // point Q (weights ws on shell vertices si); returns the signed normal force [N] or 0.
+  // One signed contact between wire point P (weights ww on wire nodes wi) and shell point Q
+  // (weights ws on shell vertices si): normal, overlap, energy and force, without side effects
+  // (so that threads can compute them); hit.touching is false when apart.
   auto contact = [&](const Vec3& P, const Vec3& Q, const Vec3& fallback_n, const int* wi,
                      const double* ww, int nw, const int* si, const double* ws, int ns, double sign,
-                     Vec3* normal, double* overlap) -> double {
+                     Hit& hit) {
     const Vec3 d = P - Q;
     const double dist2 = d.squaredNorm();
-    if (dist2 >= Dc * Dc) return 0.0;
+    hit.touching = dist2 < Dc * Dc;
+    if (!hit.touching) return;
     const double dist = std::sqrt(dist2);
-    const Vec3 n = dist > 1e-12 * p_.r ? Vec3(d / dist) : fallback_n;
-    const double delta = Dc - dist;
-    max_overlap_ = std::max(max_overlap_, delta);
-    U += sign * hertz_.energy(delta);
-    if (normal) *normal = n;
-    if (overlap) *overlap = delta;
-    if (!out) return sign * hertz_.force(delta);
+    hit.n = dist > 1e-12 * p_.r ? Vec3(d / dist) : fallback_n;
+    hit.delta = Dc - dist;
+    hit.energy = sign * hertz_.energy(hit.delta);
+    if (!out) {
+      hit.force = sign * hertz_.force(hit.delta);
+      return;
+    }
     Vec3 vw = Vec3::Zero(), vs = Vec3::Zero();
     for (int k = 0; k < nw; ++k) vw += ww[k] * s.v[wi[k]];
     for (int k = 0; k < ns; ++k) vs += ws[k] * s.shell_v[si[k]];
-    const double f = damped_normal_force(hertz_, delta, -(vw - vs).dot(n), p_.damping_ratio, m_eff);
-    const Vec3 F = sign * f * n;  // on the wire; -F on the shell
-    for (int k = 0; k < nw; ++k) out->f[wi[k]] += ww[k] * F;
-    for (int k = 0; k < ns; ++k) out->shell_f[si[k]] -= ws[k] * F;
-    return sign * f;
+    const double f =
+        damped_normal_force(hertz_, hit.delta, -(vw - vs).dot(hit.n), p_.damping_ratio, m_eff);
+    hit.F = sign * f * hit.n;  // on the wire; -F on the shell
+    hit.force = sign * f;
+  };
+  // Adds a contact computed above (in pair order, so the sums do not depend on the threads);
+  // returns its signed normal force [N] (0 when apart).
+  double U = 0.0;
+  auto apply = [&](const Hit& hit, const int* wi, const double* ww, int nw, const int* si,
+                   const double* ws, int ns) -> double {
+    if (!hit.touching) return 0.0;
+    max_overlap_ = std::max(max_overlap_, hit.delta);
+    U += hit.energy;
+    if (out) {
+      for (int k = 0; k < nw; ++k) out->f[wi[k]] += ww[k] * hit.F;
+      for (int k = 0; k < ns; ++k) out->shell_f[si[k]] -= ws[k] * hit.F;
+    }
+    return hit.force;
   };
 
-  // Geometry first, in parallel (threads over pairs; each writes its own entry): the closest
-  // points of the (wire edge, face) and (wire edge, shell edge) pairs that can touch. The
-  // forces are then applied serially in pair order, so the sums do not depend on the threads.
+  // Geometry and contact forces first, in parallel (threads over pairs; each writes its own
+  // entry): the closest points of the (wire edge, face), (wire edge, shell edge) and (wire
+  // edge, shell vertex) pairs that can touch, and the contacts of those that do. The forces are
+  // then added serially in pair order, so the sums do not depend on the threads.
   const auto wire_moved2 = [&](int e) { return std::max(moved2_[e], moved2_[e + 1]); };
   const int n_cand = static_cast<int>(candidates_.size());
   const int n_edge = static_cast<int>(seg_edge_.size());
+  const int n_vert = static_cast<int>(seg_vert_.size());
   cand_geo_.resize(n_cand);
+  cand_hit_.resize(n_cand);
   edge_geo_.resize(n_edge);
+  edge_hit_.resize(n_edge);
+  vert_t_.resize(n_vert);
+  vert_hit_.resize(n_vert);
   const double far2 = Dc * Dc;  // dist2 at or above this: no contact
   const double skipped = std::numeric_limits<double>::infinity();  // dist2 of a skipped pair
-  // A candidate touches when its distance is below r + t/2 (the serial loop below).
+  // A candidate touches when its distance is below r + t/2 (then it is a face pair below).
   const auto touching = [&](int q) { return q >= 0 && cand_geo_[q].dist2 < far2; };
+  const Vec3 no_n = Vec3::UnitZ();  // only for exactly coincident points (measure zero)
 #pragma omp parallel
   {
 #pragma omp for schedule(static)
@@ -221,40 +263,75 @@ double WireShellTerm::evaluate(const RodState& s, RodForces* out) {
         cand_geo_[q].dist2 = far2;
         continue;
       }
-      cand_geo_[q] = segment_triangle_closest(s.x[e], s.x[e + 1], s.shell_x[v[0]], s.shell_x[v[1]],
-                                              s.shell_x[v[2]]);
+      const TriangleClosest& tc = cand_geo_[q] = segment_triangle_closest(
+          s.x[e], s.x[e + 1], s.shell_x[v[0]], s.shell_x[v[1]], s.shell_x[v[2]]);
+      if (tc.dist2 >= far2) continue;
+      // The primary contact: closest points, the face's normal towards the wire as fallback.
+      const Vec3 &a = s.shell_x[v[0]], &b = s.shell_x[v[1]], &c = s.shell_x[v[2]];
+      const Vec3 P = s.x[e] + tc.s * (s.x[e + 1] - s.x[e]);
+      const Vec3 Q = tc.w[0] * a + tc.w[1] * b + tc.w[2] * c;
+      Vec3 fn = (b - a).cross(c - a).normalized();
+      if (fn.dot(P - (a + b + c) / 3.0) < 0) fn = -fn;
+      const int wi[2] = {e, e + 1};
+      const double ww[2] = {1.0 - tc.s, tc.s};
+      contact(P, Q, fn, wi, ww, 2, v.data(), tc.w.data(), 3, +1.0, cand_hit_[q]);
     }
 #pragma omp for schedule(static)
-    for (int q = 0; q < n_edge; ++q) {
+    for (int q = 0; q < n_edge; ++q) {  // - (wire edge, shell edge)
       const auto [e, k] = seg_edge_[q];
       const int v0 = mesh_.edges[k][0], v1 = mesh_.edges[k][1];
+      edge_hit_[q].touching = false;
       if (std::max(wire_moved2(e), std::max(shell_moved2_[v0], shell_moved2_[v1])) <
               edge_slack2_4_[q] ||
           (!touching(edge_owner_[q][0]) && !touching(edge_owner_[q][1]))) {
         edge_geo_[q].dist2 = skipped;
         continue;
       }
-      edge_geo_[q] = segment_segment_closest(s.x[e], s.x[e + 1], s.shell_x[v0], s.shell_x[v1]);
+      const SegmentClosest& c = edge_geo_[q] =
+          segment_segment_closest(s.x[e], s.x[e + 1], s.shell_x[v0], s.shell_x[v1]);
+      const int wi[2] = {e, e + 1}, si[2] = {v0, v1};
+      const double ww[2] = {1 - c.s, c.s}, ws[2] = {1 - c.t, c.t};
+      contact(s.x[e] + c.s * (s.x[e + 1] - s.x[e]),
+              s.shell_x[v0] + c.t * (s.shell_x[v1] - s.shell_x[v0]), no_n, wi, ww, 2, si, ws, 2,
+              -1.0, edge_hit_[q]);
+    }
+#pragma omp for schedule(static)
+    for (int q = 0; q < n_vert; ++q) {  // + (wire edge, shell vertex)
+      const auto [e, vtx] = seg_vert_[q];
+      vert_hit_[q].touching = false;
+      if (std::max(wire_moved2(e), shell_moved2_[vtx]) < vert_slack2_4_[q]) continue;
+      const int* owners = vert_owner_.data() + vert_owner_start_[q];
+      const int n_owners = vert_owner_start_[q + 1] - vert_owner_start_[q];
+      bool any = false;
+      for (int j = 0; j < n_owners && !any; ++j) any = touching(owners[j]);
+      if (!any) continue;
+      // Closest point of the wire edge to the vertex: x_e + t (x_e+1 - x_e), t in [0, 1].
+      const Vec3& Q = s.shell_x[vtx];
+      const Vec3 d = s.x[e + 1] - s.x[e];
+      const double dd = d.squaredNorm();
+      const double t = vert_t_[q] = dd > 0 ? std::clamp((Q - s.x[e]).dot(d) / dd, 0.0, 1.0) : 0.0;
+      const int wi[2] = {e, e + 1};
+      const double ww[2] = {1 - t, t}, one = 1.0;
+      contact(s.x[e] + t * d, Q, no_n, wi, ww, 2, &vtx, &one, 1, +1.0, vert_hit_[q]);
     }
   }
 
-  // (wire edge, face): the primary contacts.
+  // (wire edge, face): the primary contacts, one face pair per candidate within reach.
   cand_face_pair_.assign(n_cand, -1);
   for (int q = 0; q < n_cand; ++q) {
     const TriangleClosest& tc = cand_geo_[q];
     if (tc.dist2 >= far2) continue;
     cand_face_pair_[q] = static_cast<int>(face_pairs_.size());
     const auto [e, f] = candidates_[q];
-    const auto& v = mesh_.faces[f];
-    const Vec3 &a = s.shell_x[v[0]], &b = s.shell_x[v[1]], &c = s.shell_x[v[2]];
-    const Vec3 P = s.x[e] + tc.s * (s.x[e + 1] - s.x[e]);
-    const Vec3 Q = tc.w[0] * a + tc.w[1] * b + tc.w[2] * c;
-    Vec3 fn = (b - a).cross(c - a).normalized();
-    if (fn.dot(P - (a + b + c) / 3.0) < 0) fn = -fn;
     const int wi[2] = {e, e + 1};
     const double ww[2] = {1.0 - tc.s, tc.s};
+    const Hit& hit = cand_hit_[q];
     FacePair fp{e, f, tc.s, tc.w, Vec3::Zero(), 0.0, 0.0};
-    fp.force = contact(P, Q, fn, wi, ww, 2, v.data(), tc.w.data(), 3, +1.0, &fp.n, &fp.delta);
+    if (hit.touching) {
+      fp.n = hit.n;
+      fp.delta = hit.delta;
+    }
+    fp.force = apply(hit, wi, ww, 2, mesh_.faces[f].data(), tc.w.data(), 3);
     face_pairs_.push_back(fp);
   }
 
@@ -269,36 +346,22 @@ double WireShellTerm::evaluate(const RodState& s, RodForces* out) {
     }
     for (int i = 0; i < n_own; ++i) face_pairs_[owners[i]].force += signed_force / n_own;
   };
-  const Vec3 no_n = Vec3::UnitZ();    // only for exactly coincident points (measure zero)
   for (int q = 0; q < n_edge; ++q) {  // - (wire edge, shell edge)
+    if (!edge_hit_[q].touching) continue;
     const SegmentClosest& c = edge_geo_[q];
-    if (c.dist2 == skipped) continue;  // contact() below decides from the closest points
     const auto [e, k] = seg_edge_[q];
-    const int v0 = mesh_.edges[k][0], v1 = mesh_.edges[k][1];
-    const int wi[2] = {e, e + 1}, si[2] = {v0, v1};
+    const int wi[2] = {e, e + 1}, si[2] = {mesh_.edges[k][0], mesh_.edges[k][1]};
     const double ww[2] = {1 - c.s, c.s}, ws[2] = {1 - c.t, c.t};
-    const double f = contact(s.x[e] + c.s * (s.x[e + 1] - s.x[e]),
-                             s.shell_x[v0] + c.t * (s.shell_x[v1] - s.shell_x[v0]), no_n, wi, ww, 2,
-                             si, ws, 2, -1.0, nullptr, nullptr);
-    share(f, edge_owner_[q].data(), 2);
+    share(apply(edge_hit_[q], wi, ww, 2, si, ws, 2), edge_owner_[q].data(), 2);
   }
-  for (size_t q = 0; q < seg_vert_.size(); ++q) {  // + (wire edge, shell vertex)
+  for (int q = 0; q < n_vert; ++q) {  // + (wire edge, shell vertex)
+    if (!vert_hit_[q].touching) continue;
     const auto [e, vtx] = seg_vert_[q];
-    if (std::max(wire_moved2(e), shell_moved2_[vtx]) < vert_slack2_4_[q]) continue;
-    const int* owners = vert_owner_.data() + vert_owner_start_[q];
-    const int n_owners = vert_owner_start_[q + 1] - vert_owner_start_[q];
-    bool any = false;
-    for (int j = 0; j < n_owners && !any; ++j) any = touching(owners[j]);
-    if (!any) continue;
-    const Vec3& Q = s.shell_x[vtx];
-    const Vec3 d = s.x[e + 1] - s.x[e];
-    const double dd = d.squaredNorm();
-    const double t = dd > 0 ? std::clamp((Q - s.x[e]).dot(d) / dd, 0.0, 1.0) : 0.0;
+    const double t = vert_t_[q];
     const int wi[2] = {e, e + 1};
     const double ww[2] = {1 - t, t}, one = 1.0;
-    const double f =
-        contact(s.x[e] + t * d, Q, no_n, wi, ww, 2, &vtx, &one, 1, +1.0, nullptr, nullptr);
-    share(f, owners, n_owners);
+    share(apply(vert_hit_[q], wi, ww, 2, &vtx, &one, 1), vert_owner_.data() + vert_owner_start_[q],
+          vert_owner_start_[q + 1] - vert_owner_start_[q]);
   }
   return U;
 }

@@ -104,6 +104,7 @@ class WireShellTerm : public Term {
     double slack2_4;
   };
   std::vector<FoundPair> found_;               // scratch of rebuild()
+  std::vector<double> broad_dist2_;            // scratch of rebuild(): per broad pair [m^2]
   std::vector<double> moved2_, shell_moved2_;  // |x - x_at_build|^2 per node / vertex [m^2]
   Vec3List x_at_build_, shell_at_build_;
   int edges_at_build_ = -1;
@@ -115,6 +116,17 @@ class WireShellTerm : public Term {
   std::vector<TriangleClosest> cand_geo_;
   std::vector<int> cand_face_pair_;  // index into face_pairs_ per candidate, -1 when apart
   std::vector<SegmentClosest> edge_geo_;
+  // One contact of a pair, computed in parallel and added in pair order: unit normal (from
+  // shell to wire), overlap [m], signed energy [J], signed normal force [N] and the force on
+  // the wire [N] (-F on the shell); touching false when apart.
+  struct Hit {
+    bool touching = false;
+    Vec3 n = Vec3::Zero();
+    double delta = 0, energy = 0, force = 0;
+    Vec3 F = Vec3::Zero();
+  };
+  std::vector<Hit> cand_hit_, edge_hit_, vert_hit_;
+  std::vector<double> vert_t_;  // closest point x_e + t (x_e+1 - x_e) to each vertex pair's vertex
   double max_stiffness_ = 0;
   double max_overlap_ = 0;  // largest overlap of the last evaluation [m]
   std::unique_ptr<FrictionHistory> friction_;

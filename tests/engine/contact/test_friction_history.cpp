@@ -2,6 +2,8 @@
 // the spring when a contact moves to a neighbouring element pair, and transactions.
 #include <gtest/gtest.h>
 
+#include <vector>
+
 #include "engine/contact/friction.hpp"
 
 namespace wirepack {
@@ -95,6 +97,45 @@ TEST(FrictionHistory, RejectedTrialsLeaveNoTrace) {
   h.force(ContactKey{1, 5}, kN, kFn, kKn, Vec3(1e-3, 0, 0), kM, nullptr, 0);
   const Vec3 f = step(h, ContactKey{1, 5}, Vec3(1e-4, 0, 0), 1.0);
   EXPECT_NEAR(f[0], -0.16, 1e-12);
+}
+
+// Many contacts (the table grows several times, keys spread over both element ids and the wall's
+// -1), then most of them open: each survivor keeps its own spring, an opened one is gone and
+// starts relaxed when it touches again.
+TEST(FrictionHistory, ManyContactsKeepTheirOwnSpringsAcrossGrowthAndDrops) {
+  FrictionHistory h(params());
+  std::vector<ContactKey> keys;
+  for (int i = 0; i < 700; ++i) keys.push_back({i % 97 + 1000 * (i / 97), i % 3 == 0 ? -1 : i});
+  // Contact i is loaded at speed (i + 1) 1e-7 along x for one step: F_i = -8e-5 (i + 1) N (k_t =
+  // 800 N/m, dt = 1 s).
+  h.begin_trial(1.0);
+  for (const auto& k : keys) h.mark(k);
+  h.finish_marking();
+  for (size_t i = 0; i < keys.size(); ++i)
+    h.force(keys[i], kN, kFn, kKn, Vec3((i + 1) * 1e-7, 0, 0), kM, nullptr, 0);
+  h.commit();
+  EXPECT_EQ(h.size(), keys.size());
+  // Only every fifth contact stays closed (a zero-length step reads the springs back).
+  h.begin_trial(0.0);
+  for (size_t i = 0; i < keys.size(); i += 5) h.mark(keys[i]);
+  h.finish_marking();
+  for (size_t i = 0; i < keys.size(); i += 5) {
+    const Vec3 f = h.force(keys[i], kN, kFn, kKn, Vec3::Zero(), kM, nullptr, 0);
+    EXPECT_NEAR(f[0], -8e-5 * (i + 1), 1e-15) << "contact " << i;
+  }
+  h.commit();
+  EXPECT_EQ(h.size(), (keys.size() + 4) / 5);
+  // After the drop (the table rebuilt) the survivors still hold their springs, and an opened
+  // contact that touches again starts relaxed.
+  h.begin_trial(0.0);
+  for (size_t i = 0; i < keys.size(); i += 5) h.mark(keys[i]);
+  h.mark(keys[1]);
+  h.finish_marking();
+  for (size_t i = 0; i < keys.size(); i += 5) {
+    const Vec3 f = h.force(keys[i], kN, kFn, kKn, Vec3::Zero(), kM, nullptr, 0);
+    EXPECT_NEAR(f[0], -8e-5 * (i + 1), 1e-15) << "contact " << i;
+  }
+  EXPECT_EQ(h.force(keys[1], kN, kFn, kKn, Vec3::Zero(), kM, nullptr, 0).norm(), 0.0);
 }
 
 }  // namespace
