@@ -46,16 +46,24 @@ void FrictionHistory::Table::grow() {
 
 template <class Keep>
 void FrictionHistory::Table::retain(Keep keep) {
-  // Rebuilt (instead of deletions with backward shifts): O(capacity), once per accepted step.
+  // keep() on every entry in parallel (each slot its own); the table is rebuilt only when an
+  // entry goes (instead of deletions with backward shifts), O(capacity) once per step.
+  const long capacity = static_cast<long>(keys_.size());
+  keep_.resize(capacity);
+  long kept = 0;
+#pragma omp parallel for schedule(static) reduction(+ : kept)
+  for (long i = 0; i < capacity; ++i) {
+    keep_[i] = keys_[i] != kEmpty && keep(entries_[i]);
+    kept += keep_[i];
+  }
+  if (static_cast<std::size_t>(kept) == size_) return;  // nothing dropped: the table stands
   kept_keys_.clear();
   kept_entries_.clear();
-  for (std::size_t i = 0; i < keys_.size(); ++i) {
-    if (keys_[i] != kEmpty && keep(entries_[i])) {
-      kept_keys_.push_back(keys_[i]);
-      kept_entries_.push_back(entries_[i]);
-    }
+  for (long i = 0; i < capacity; ++i) {
+    if (!keep_[i]) continue;
+    kept_keys_.push_back(keys_[i]);
+    kept_entries_.push_back(entries_[i]);
   }
-  if (kept_keys_.size() == size_) return;  // nothing dropped: the table stands as it is
   std::fill(keys_.begin(), keys_.end(), kEmpty);
   size_ = 0;
   for (std::size_t i = 0; i < kept_keys_.size(); ++i) insert(kept_keys_[i], kept_entries_[i]);
@@ -95,7 +103,14 @@ Vec3 FrictionHistory::force(ContactKey k, const Vec3& n, double F_n, double k_n,
     }
     found = &map_.insert(key, e);
   }
-  Entry& e = *found;
+  bool sliding = false;
+  const Vec3 total = update(*found, n, F_n, k_n, v_rel, m_eff, &sliding);
+  slipping_ += sliding ? 1 : 0;
+  return total;
+}
+
+Vec3 FrictionHistory::update(Entry& e, const Vec3& n, double F_n, double k_n, const Vec3& v_rel,
+                             double m_eff, bool* sliding_out) const {
   // Rotate the committed force into the current tangent plane, keeping its magnitude.
   Vec3 F = e.F - e.F.dot(n) * n;
   const double old_mag = e.F.norm();
@@ -128,8 +143,36 @@ Vec3 FrictionHistory::force(ContactKey k, const Vec3& n, double F_n, double k_n,
   e.sliding_trial = sliding;
   e.Fn_trial = F_n;
   e.trial = trial_;
-  slipping_ += sliding ? 1 : 0;
+  *sliding_out = sliding;
   return total;
+}
+
+void FrictionHistory::forces(const std::vector<Query>& queries, std::vector<Vec3>& out) {
+  const int n = static_cast<int>(queries.size());
+  out.resize(n);
+  fresh_.assign(n, 0);
+  long slipping = 0;
+  // Existing contacts: lookups only (no insertion), each its own entry.
+#pragma omp parallel for schedule(static, 16) reduction(+ : slipping)
+  for (int i = 0; i < n; ++i) {
+    const Query& q = queries[i];
+    Entry* e = map_.find(q.key.packed());
+    if (!e) {
+      fresh_[i] = 1;
+      continue;
+    }
+    bool sliding = false;
+    out[i] = update(*e, q.n, q.F_n, q.k_n, q.v_rel, q.m_eff, &sliding);
+    slipping += sliding ? 1 : 0;
+  }
+  slipping_ += slipping;
+  // New contacts in query order: each may inherit from a neighbour, including one created
+  // earlier in this loop, exactly as force() in query order would.
+  for (int i = 0; i < n; ++i) {
+    if (!fresh_[i]) continue;
+    const Query& q = queries[i];
+    out[i] = force(q.key, q.n, q.F_n, q.k_n, q.v_rel, q.m_eff, q.neighbours, q.num_neighbours);
+  }
 }
 
 void FrictionHistory::commit() {

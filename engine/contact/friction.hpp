@@ -65,6 +65,21 @@ class FrictionHistory {
   Vec3 force(ContactKey k, const Vec3& n, double F_n, double k_n, const Vec3& v_rel, double m_eff,
              const ContactKey* neighbours, int num_neighbours);
 
+  // One contact of a batch: the arguments of force().
+  struct Query {
+    ContactKey key;
+    Vec3 n;
+    double F_n, k_n;
+    Vec3 v_rel;
+    double m_eff;
+    ContactKey neighbours[8];
+    int num_neighbours = 0;
+  };
+  // force() of each query, into out (same length): contacts that already have an entry in
+  // parallel (each reads and writes only its own entry), the new ones after them in query
+  // order, so the result is that of calling force() in query order, for any thread count.
+  void forces(const std::vector<Query>& queries, std::vector<Vec3>& out);
+
   // Accepts the last trial: its springs become the state, contacts not seen are dropped.
   void commit();
 
@@ -83,6 +98,9 @@ class FrictionHistory {
     long trial = -1;  // last trial that evaluated this contact
   };
   bool seen_this_trial(std::uint64_t key) const;
+  // The spring update of force() on an existing entry; sets *sliding.
+  Vec3 update(Entry& e, const Vec3& n, double F_n, double k_n, const Vec3& v_rel, double m_eff,
+              bool* sliding) const;
 
   // Open-addressing hash table of the entries (linear probing, at most half full): one probe
   // per lookup where a node-based map chased a pointer. Iteration order never matters (commit
@@ -104,7 +122,8 @@ class FrictionHistory {
     void grow();
     std::vector<std::uint64_t> keys_;
     std::vector<Entry> entries_;
-    std::vector<std::uint64_t> kept_keys_;  // scratch of retain()
+    std::vector<char> keep_;  // scratch of retain(): per slot
+    std::vector<std::uint64_t> kept_keys_;
     std::vector<Entry> kept_entries_;
     std::size_t size_ = 0;
     int shift_ = 64;
@@ -113,6 +132,7 @@ class FrictionHistory {
   FrictionParams p_;
   Table map_;
   std::vector<std::uint64_t> seen_;  // sorted keys present in the current trial
+  std::vector<char> fresh_;          // scratch of forces(): 1 where a query's entry is new
   double dt_ = 0;
   long trial_ = 0;
   long slipping_ = 0;

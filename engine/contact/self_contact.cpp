@@ -52,7 +52,7 @@ void SelfContactTerm::rebuild(const RodState& s) {
   // Distances in parallel (each pair its own entry), the list in the broad phase's order.
   const int nb = static_cast<int>(broad_.size());
   broad_geo_.resize(nb);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static, 16)
   for (int k = 0; k < nb; ++k) {
     const auto [a, b] = broad_[k];
     if (b - a <= exclude_) continue;
@@ -76,7 +76,7 @@ double SelfContactTerm::evaluate(const RodState& s, RodForces* out) {
   // Closest points in parallel (each candidate its own entry); the forces below in order.
   const int nc = static_cast<int>(candidates_.size());
   geo_.resize(nc);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static, 16)
   for (int k = 0; k < nc; ++k) {
     const int a = candidates_[k].a, b = candidates_[k].b;
     // Cannot touch yet: each end moved less than half the slack since the build.
@@ -127,34 +127,49 @@ double SelfContactTerm::accumulate(const RodState& s, RodForces& out) {
   if (friction_) {
     for (const WireContact& c : contacts_) friction_->mark(ContactKey{c.a, c.b});
     friction_->finish_marking();
-    // Coulomb friction at the surfaces of every pair, bounded by its net normal force.
+    // Coulomb friction at the surfaces of every pair, bounded by its net normal force. The
+    // queries in parallel (each its own entry), the forces added in pair order.
     const double m_eff = 0.5 * p_.node_mass;
     const bool twist = s.has_twist();
     const double r = p_.r;
-    for (const WireContact& c : contacts_) {
+    const int nc = static_cast<int>(contacts_.size());
+    queries_.resize(nc);
+#pragma omp parallel for schedule(static, 16)
+    for (int i = 0; i < nc; ++i) {
+      const WireContact& c = contacts_[i];
       const int a = c.a, b = c.b;
       const Vec3& n = c.normal;  // from b to a
-      const double fn = std::max(c.force, 0.0);
       // Surface points: a at -r n from its axis, b at +r n; spin adds omega t x (offset).
       Vec3 v_rel =
           (1.0 - c.s) * s.v[a] + c.s * s.v[a + 1] - (1.0 - c.t) * s.v[b] - c.t * s.v[b + 1];
-      Vec3 ta, tb;
       if (twist) {
-        ta = out.edge_t[a];
-        tb = out.edge_t[b];
-        v_rel += s.omega[a] * ta.cross(-r * n) - s.omega[b] * tb.cross(r * n);
+        v_rel += s.omega[a] * out.edge_t[a].cross(-r * n) - s.omega[b] * out.edge_t[b].cross(r * n);
       }
+      FrictionHistory::Query& q = queries_[i];
+      q.key = ContactKey{a, b};
+      q.n = n;
+      q.F_n = std::max(c.force, 0.0);
+      q.k_n = hertz_.stiffness(c.delta);
+      q.v_rel = v_rel;
+      q.m_eff = m_eff;
       const ContactKey nb[8] = {{a + 1, b},     {a - 1, b},     {a, b + 1},     {a, b - 1},
                                 {a + 1, b + 1}, {a - 1, b - 1}, {a + 1, b - 1}, {a - 1, b + 1}};
-      const Vec3 ft =
-          friction_->force(ContactKey{a, b}, n, fn, hertz_.stiffness(c.delta), v_rel, m_eff, nb, 8);
+      std::copy(nb, nb + 8, q.neighbours);
+      q.num_neighbours = 8;
+    }
+    friction_->forces(queries_, friction_force_);
+    for (int i = 0; i < nc; ++i) {
+      const WireContact& c = contacts_[i];
+      const int a = c.a, b = c.b;
+      const Vec3& n = c.normal;
+      const Vec3& ft = friction_force_[i];
       out.f[a] += (1.0 - c.s) * ft;
       out.f[a + 1] += c.s * ft;
       out.f[b] -= (1.0 - c.t) * ft;
       out.f[b + 1] -= c.t * ft;
       if (twist) {
-        out.torque[a] += (-r * n).cross(ft).dot(ta);
-        out.torque[b] += (r * n).cross(-ft).dot(tb);
+        out.torque[a] += (-r * n).cross(ft).dot(out.edge_t[a]);
+        out.torque[b] += (r * n).cross(-ft).dot(out.edge_t[b]);
       }
     }
   }

@@ -101,7 +101,9 @@ class SelfContactTerm : public Term {
   long rebuilds_ = 0;
   std::vector<WireContact> contacts_;
   double max_stiffness_ = 0;
-  std::unique_ptr<FrictionHistory> friction_;  // null when mu_s = 0 (no history, no torques)
+  std::unique_ptr<FrictionHistory> friction_;    // null when mu_s = 0 (no history, no torques)
+  std::vector<FrictionHistory::Query> queries_;  // scratch of accumulate(): one per contact
+  std::vector<Vec3> friction_force_;             // friction on edge a per contact [N]
 };
 
 }  // namespace wirepack

@@ -76,21 +76,24 @@ void WireShellTerm::rebuild(const RodState& s) {
     points_[e] = 0.5 * (s.x[e] + s.x[e + 1]);
     lmax = std::max(lmax, (s.x[e + 1] - s.x[e]).norm());
   }
-  face_reach_ = 0.0;
+  double face_reach = 0.0;
+#pragma omp parallel for schedule(static) reduction(max : face_reach)
   for (int f = 0; f < nf; ++f) {
     const auto& v = mesh_.faces[f];
     const Vec3 c = (s.shell_x[v[0]] + s.shell_x[v[1]] + s.shell_x[v[2]]) / 3.0;
     points_[ne + f] = c;
-    for (int k = 0; k < 3; ++k) face_reach_ = std::max(face_reach_, (s.shell_x[v[k]] - c).norm());
+    for (int k = 0; k < 3; ++k) face_reach = std::max(face_reach, (s.shell_x[v[k]] - c).norm());
   }
+  face_reach_ = face_reach;
   const double Dc = p_.r + p_.half_thickness;
   const double reach = Dc + p_.skin;
   grid_.find_pairs_between(points_, ne, 0.5 * lmax + face_reach_ + reach, broad_);
-  // (wire edge, face) pairs within reach with their slack (verlet_slack.hpp), sorted by pair.
+  // (wire edge, face) pairs within reach with their slack (verlet_slack.hpp), sorted by pair
+  // (the broad phase lists its pairs in (i, j) order).
   // Distances in parallel (one entry per broad pair), the list in the broad phase's order.
   const int nb = static_cast<int>(broad_.size());
   broad_dist2_.resize(nb);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static, 16)
   for (int k = 0; k < nb; ++k) {
     const auto [e, j] = broad_[k];  // (wire edge, ne + face): find_pairs_between
     const auto& v = mesh_.faces[j - ne];
@@ -105,8 +108,6 @@ void WireShellTerm::rebuild(const RodState& s) {
       found_.push_back({broad_[k].first, broad_[k].second - ne, quarter_slack2(dist2, Dc, p_.r)});
     }
   }
-  std::sort(found_.begin(), found_.end(),
-            [](const auto& a, const auto& b) { return std::tie(a.e, a.f) < std::tie(b.e, b.f); });
   for (const auto& c : found_) {
     candidates_.emplace_back(c.e, c.f);
     cand_slack2_4_.push_back(c.slack2_4);
@@ -115,16 +116,25 @@ void WireShellTerm::rebuild(const RodState& s) {
   // the inclusion-exclusion corrections: an edge is the overlap of its two faces, an interior
   // vertex the overlap of its closed fan; the rim's pieces overlap nothing. Built here, not per
   // evaluation: they change only with the candidates.
-  for (const auto& [e, f] : candidates_) {
-    for (int k = 0; k < 3; ++k) {
-      const int ek = mesh_.face_edges[f][k], vk = mesh_.faces[f][k];
-      if (mesh_.edge_faces[ek][1] >= 0) seg_edge_.emplace_back(e, ek);
-      if (!boundary_vertex_[vk]) seg_vert_.emplace_back(e, vk);
+  // The candidates come sorted by wire edge: sorting each edge's few pieces gives the sorted
+  // unique lists at a fraction of one global sort.
+  const auto sort_unique_from = [](std::vector<std::pair<int, int>>& list, size_t from) {
+    std::sort(list.begin() + from, list.end());
+    list.erase(std::unique(list.begin() + from, list.end()), list.end());
+  };
+  for (size_t i = 0; i < candidates_.size();) {
+    const int e = candidates_[i].first;
+    const size_t edges_from = seg_edge_.size(), verts_from = seg_vert_.size();
+    for (; i < candidates_.size() && candidates_[i].first == e; ++i) {
+      const int f = candidates_[i].second;
+      for (int k = 0; k < 3; ++k) {
+        const int ek = mesh_.face_edges[f][k], vk = mesh_.faces[f][k];
+        if (mesh_.edge_faces[ek][1] >= 0) seg_edge_.emplace_back(e, ek);
+        if (!boundary_vertex_[vk]) seg_vert_.emplace_back(e, vk);
+      }
     }
-  }
-  for (auto* list : {&seg_edge_, &seg_vert_}) {
-    std::sort(list->begin(), list->end());
-    list->erase(std::unique(list->begin(), list->end()), list->end());
+    sort_unique_from(seg_edge_, edges_from);
+    sort_unique_from(seg_vert_, verts_from);
   }
   // Slack of the correction pairs, from their distances at the build (in parallel, one entry
   // per pair).
@@ -134,14 +144,14 @@ void WireShellTerm::rebuild(const RodState& s) {
   vert_slack2_4_.resize(n_vert);
 #pragma omp parallel
   {
-#pragma omp for schedule(static)
+#pragma omp for schedule(static, 16)
     for (int q = 0; q < n_edge; ++q) {
       const auto [e, k] = seg_edge_[q];
       const SegmentClosest c = segment_segment_closest(
           s.x[e], s.x[e + 1], s.shell_x[mesh_.edges[k][0]], s.shell_x[mesh_.edges[k][1]]);
       edge_slack2_4_[q] = quarter_slack2(c.dist2, Dc, p_.r);
     }
-#pragma omp for schedule(static)
+#pragma omp for schedule(static, 16)
     for (int q = 0; q < n_vert; ++q) {
       const auto [e, vtx] = seg_vert_[q];
       const SegmentClosest c =
@@ -159,16 +169,28 @@ void WireShellTerm::rebuild(const RodState& s) {
                ? static_cast<int>(it - candidates_.begin())
                : -1;
   };
-  edge_owner_.clear();
-  for (const auto& [e, k] : seg_edge_) {
-    const auto& ef = mesh_.edge_faces[k];
-    edge_owner_.push_back({candidate_of(e, ef[0]), ef[1] >= 0 ? candidate_of(e, ef[1]) : -1});
+  // Offsets first (serial prefix sum), then the owners in parallel, each pair its own slots.
+  vert_owner_start_.assign(n_vert + 1, 0);
+  for (int q = 0; q < n_vert; ++q) {
+    vert_owner_start_[q + 1] =
+        vert_owner_start_[q] + static_cast<int>(vertex_faces_[seg_vert_[q].second].size());
   }
-  vert_owner_start_.assign(1, 0);
-  vert_owner_.clear();
-  for (const auto& [e, vtx] : seg_vert_) {
-    for (int f : vertex_faces_[vtx]) vert_owner_.push_back(candidate_of(e, f));
-    vert_owner_start_.push_back(static_cast<int>(vert_owner_.size()));
+  edge_owner_.resize(n_edge);
+  vert_owner_.resize(vert_owner_start_[n_vert]);
+#pragma omp parallel
+  {
+#pragma omp for schedule(static, 16)
+    for (int q = 0; q < n_edge; ++q) {
+      const auto [e, k] = seg_edge_[q];
+      const auto& ef = mesh_.edge_faces[k];
+      edge_owner_[q] = {candidate_of(e, ef[0]), ef[1] >= 0 ? candidate_of(e, ef[1]) : -1};
+    }
+#pragma omp for schedule(static, 16)
+    for (int q = 0; q < n_vert; ++q) {
+      const auto [e, vtx] = seg_vert_[q];
+      int* slot = vert_owner_.data() + vert_owner_start_[q];
+      for (int f : vertex_faces_[vtx]) *slot++ = candidate_of(e, f);
+    }
   }
 }
 
@@ -252,7 +274,7 @@ double WireShellTerm::evaluate(const RodState& s, RodForces* out) {
   const Vec3 no_n = Vec3::UnitZ();  // only for exactly coincident points (measure zero)
 #pragma omp parallel
   {
-#pragma omp for schedule(static)
+#pragma omp for schedule(static, 16)
     for (int q = 0; q < n_cand; ++q) {
       const auto [e, f] = candidates_[q];
       const auto& v = mesh_.faces[f];
@@ -276,7 +298,7 @@ double WireShellTerm::evaluate(const RodState& s, RodForces* out) {
       const double ww[2] = {1.0 - tc.s, tc.s};
       contact(P, Q, fn, wi, ww, 2, v.data(), tc.w.data(), 3, +1.0, cand_hit_[q]);
     }
-#pragma omp for schedule(static)
+#pragma omp for schedule(static, 16)
     for (int q = 0; q < n_edge; ++q) {  // - (wire edge, shell edge)
       const auto [e, k] = seg_edge_[q];
       const int v0 = mesh_.edges[k][0], v1 = mesh_.edges[k][1];
@@ -295,7 +317,7 @@ double WireShellTerm::evaluate(const RodState& s, RodForces* out) {
               s.shell_x[v0] + c.t * (s.shell_x[v1] - s.shell_x[v0]), no_n, wi, ww, 2, si, ws, 2,
               -1.0, edge_hit_[q]);
     }
-#pragma omp for schedule(static)
+#pragma omp for schedule(static, 16)
     for (int q = 0; q < n_vert; ++q) {  // + (wire edge, shell vertex)
       const auto [e, vtx] = seg_vert_[q];
       vert_hit_[q].touching = false;
@@ -377,7 +399,13 @@ double WireShellTerm::accumulate(const RodState& s, RodForces& out) {
   const bool twist = s.has_twist();
   const double r = p_.r;
   const double m_eff = 1.0 / (1.0 / p_.node_mass + 1.0 / p_.vertex_mass);
-  for (const FacePair& c : face_pairs_) {
+  // The friction queries in parallel (each its own entry), the forces added in pair order.
+  const int np = static_cast<int>(face_pairs_.size());
+  queries_.resize(np);
+  edge_t_.resize(np);
+#pragma omp parallel for schedule(static, 16)
+  for (int i = 0; i < np; ++i) {
+    const FacePair& c = face_pairs_[i];
     const int e = c.e;
     const auto& v = mesh_.faces[c.f];
     Vec3 v_rel = (1.0 - c.s) * s.v[e] + c.s * s.v[e + 1];
@@ -387,18 +415,33 @@ double WireShellTerm::accumulate(const RodState& s, RodForces& out) {
       te = (s.x[e + 1] - s.x[e]).normalized();
       v_rel += s.omega[e] * te.cross(-r * c.n);  // the wire's surface point at -r n
     }
+    edge_t_[i] = te;
+    FrictionHistory::Query& q = queries_[i];
+    q.key = ContactKey{e, c.f};
+    q.n = c.n;
+    q.F_n = std::max(c.force, 0.0);
+    q.k_n = hertz_.stiffness(c.delta);
+    q.v_rel = v_rel;
+    q.m_eff = m_eff;
     // Neighbours for history transfer: the next edges along the wire, the faces across.
-    ContactKey nb[5] = {{e + 1, c.f}, {e - 1, c.f}, {e, -1}, {e, -1}, {e, -1}};
+    q.neighbours[0] = {e + 1, c.f};
+    q.neighbours[1] = {e - 1, c.f};
     for (int k = 0; k < 3; ++k) {
       const auto& ef = mesh_.edge_faces[mesh_.face_edges[c.f][k]];
-      nb[2 + k].b = ef[0] == c.f ? ef[1] : ef[0];
+      q.neighbours[2 + k] = {e, ef[0] == c.f ? ef[1] : ef[0]};
     }
-    const Vec3 ft = friction_->force(ContactKey{e, c.f}, c.n, std::max(c.force, 0.0),
-                                     hertz_.stiffness(c.delta), v_rel, m_eff, nb, 5);
+    q.num_neighbours = 5;
+  }
+  friction_->forces(queries_, friction_force_);
+  for (int i = 0; i < np; ++i) {
+    const FacePair& c = face_pairs_[i];
+    const int e = c.e;
+    const auto& v = mesh_.faces[c.f];
+    const Vec3& ft = friction_force_[i];
     out.f[e] += (1.0 - c.s) * ft;
     out.f[e + 1] += c.s * ft;
     for (int k = 0; k < 3; ++k) out.shell_f[v[k]] -= c.w[k] * ft;
-    if (twist) out.torque[e] += (-r * c.n).cross(ft).dot(te);
+    if (twist) out.torque[e] += (-r * c.n).cross(ft).dot(edge_t_[i]);
   }
   return U;
 }

@@ -130,6 +130,9 @@ class WireShellTerm : public Term {
   double max_stiffness_ = 0;
   double max_overlap_ = 0;  // largest overlap of the last evaluation [m]
   std::unique_ptr<FrictionHistory> friction_;
+  std::vector<FrictionHistory::Query> queries_;  // scratch of accumulate(): one per face pair
+  std::vector<Vec3> friction_force_;             // friction on the wire per face pair [N]
+  Vec3List edge_t_;                              // unit tangent of each face pair's wire edge
 };
 
 }  // namespace wirepack

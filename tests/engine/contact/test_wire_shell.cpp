@@ -5,6 +5,8 @@
 #include <cmath>
 #include <random>
 
+#include <Eigen/Dense>
+
 #include "engine/contact/wire_shell.hpp"
 #include "engine/shell/mesh_builders.hpp"
 
@@ -182,6 +184,77 @@ TEST(WireShell, VerletSkipGivesTheFreshTermsForces) {
   }
   EXPECT_EQ(term.rebuilds(), 1) << "moves below skin / 2 keep the list";
   EXPECT_GT(changed, 0) << "the moves should change the contacts";
+}
+
+// The stability bound of the coupling (wire_shell.cpp, omega_max_sq): omega^2 <= k (1 / m_min +
+// 1 / sqrt(m_n m_v)) must cover the largest eigenvalue of M^-1 K of the contact, K the Hessian of
+// the contact energy over every wire and shell coordinate (central differences of the forces),
+// M the node and vertex masses (a light vertex against the wire, m_v / m_n = 0.07 as at xi = 10).
+TEST(WireShell, CouplingBoundCoversTheContactsLargestMode) {
+  WireShellParams p = params();
+  p.vertex_mass = 0.07 * p.node_mass;
+  const ShellMesh mesh = flat_square(12 * kR, 6);  // 2 r squares, vertex at the origin
+  const double delta = 0.02 * kR, z = kR + kH - delta;
+  struct Case {
+    Vec3 a, b;  // wire ends
+    double max_ratio;
+  };
+  // Tilted wires whose lower end touches (a wire parallel to the mesh has a kink in its energy,
+  // the closest point jumping between its ends): above the vertex at the origin (exactly k (1 /
+  // m_n + 1 / m_v), the bound 1.18 times it), above an edge's midpoint (k (1 / m_n + 1 / (2
+  // m_v)), 2.2 times) and above a face's interior (3.1 times at its centroid).
+  const Vec3 up(0.3 * kR, 0.2 * kR, 0.9 * kR);
+  const Case cases[] = {
+      {Vec3(0, 0, z), Vec3(0, 0, z) + up, 1.19},
+      {Vec3(kR, 0, z), Vec3(kR, 0, z) + up, 2.3},
+      {Vec3(1.3 * kR, 0.6 * kR, z), Vec3(1.3 * kR, 0.6 * kR, z) + up, 4.0},
+  };
+  for (const Case& c : cases) {
+    RodState s = wire_over(mesh, c.a, c.b, 2);
+    WireShellTerm term(mesh, p);
+    RodForces f;
+    f.reset(s);
+    term.accumulate(s, f);
+    ASSERT_GT(term.contacts(), 0);
+    const double bound = term.omega_max_sq(RodInertia{p.node_mass, 0.0});
+    // Coordinates: 6 of the wire, then 3 per shell vertex; mass-weighted Hessian by central
+    // differences of the forces (h = 1e-6 r: the Hertz law is smooth at this overlap).
+    const int nw = 6, n = nw + 3 * static_cast<int>(s.shell_x.size());
+    auto coord = [&](int i) -> double& {
+      return i < nw ? s.x[i / 3][i % 3] : s.shell_x[(i - nw) / 3][(i - nw) % 3];
+    };
+    auto forces = [&](Eigen::VectorXd& g) {
+      WireShellTerm fresh(mesh, p);
+      RodForces ff;
+      ff.reset(s);
+      fresh.accumulate(s, ff);
+      g.resize(n);
+      for (int i = 0; i < n; ++i) {
+        g[i] = i < nw ? ff.f[i / 3][i % 3] : ff.shell_f[(i - nw) / 3][(i - nw) % 3];
+      }
+    };
+    const double h = 1e-6 * kR;
+    Eigen::MatrixXd A(n, n);
+    Eigen::VectorXd up, dn;
+    for (int j = 0; j < n; ++j) {
+      const double keep = coord(j);
+      coord(j) = keep + h;
+      forces(up);
+      coord(j) = keep - h;
+      forces(dn);
+      coord(j) = keep;
+      A.col(j) = -(up - dn) / (2 * h);  // K = -dF/dx
+    }
+    Eigen::VectorXd inv_sqrt_m(n);
+    for (int i = 0; i < n; ++i)
+      inv_sqrt_m[i] = 1.0 / std::sqrt(i < nw ? p.node_mass : p.vertex_mass);
+    A = inv_sqrt_m.asDiagonal() * (0.5 * (A + A.transpose())) * inv_sqrt_m.asDiagonal();
+    const double lambda =
+        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(A).eigenvalues().maxCoeff();
+    std::printf("  bound / largest eigenvalue: %.3f\n", bound / lambda);
+    EXPECT_GE(bound, lambda * (1 - 1e-4)) << "wire from " << c.a.transpose();
+    EXPECT_LE(bound, c.max_ratio * lambda) << "wire from " << c.a.transpose();
+  }
 }
 
 }  // namespace
