@@ -3,6 +3,7 @@
 #include <sys/wait.h>
 
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -176,6 +177,31 @@ TEST(Cli, FailedRunExit1) {
   const auto rec = sweep::read_run_file(dir / "run.h5");
   EXPECT_EQ(rec.status, sweep::RunStatus::Failed);
   EXPECT_FALSE(rec.failure.empty());
+}
+
+// run --threads 2 without a wait policy or spin count in the environment starts itself once more
+// with GOMP_SPINCOUNT set (app/main.cpp): the same arguments reach the run, and its file is the
+// one a single thread writes (series equal, all but the wall clock).
+TEST(Cli, ThreadedRunRestartsWithASpinCountAndWritesTheSameRun) {
+  TempDir dir;
+  dir.write("s.json", R"({"rho": 20, "xi": 10, "eps": 1000, "mu_s": 0.3, "l_max": 1.5,
+                          "numerics": "fast"})");
+  const Result one = wirepack(dir, "run s.json --out one.h5 --threads 1");
+  ASSERT_EQ(one.code, 0) << one.err;
+  const Result two = wirepack::testing::run_wirepack(dir, "run s.json --out two.h5 --threads 2",
+                                                     "env -u OMP_WAIT_POLICY -u GOMP_SPINCOUNT");
+  ASSERT_EQ(two.code, 0) << two.err;
+  EXPECT_EQ(two.out, "two.h5\n");
+  const auto a = sweep::read_run_file(dir / "one.h5");
+  const auto b = sweep::read_run_file(dir / "two.h5");
+  ASSERT_EQ(b.status, sweep::RunStatus::Complete);
+  ASSERT_EQ(a.series.size(), b.series.size());
+  for (size_t k = 0; k < a.series.size(); ++k) {
+    if (a.series[k].name == "wall_s") continue;
+    const auto &x = a.series[k].values, &y = b.series[k].values;  // bitwise (NaN where undefined)
+    ASSERT_EQ(x.size(), y.size()) << a.series[k].name;
+    EXPECT_EQ(std::memcmp(x.data(), y.data(), x.size() * sizeof(double)), 0) << a.series[k].name;
+  }
 }
 
 }  // namespace
