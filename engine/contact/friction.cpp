@@ -153,7 +153,7 @@ void FrictionHistory::forces(const std::vector<Query>& queries, std::vector<Vec3
   fresh_.assign(n, 0);
   long slipping = 0;
   // Existing contacts: lookups only (no insertion), each its own entry.
-#pragma omp parallel for schedule(dynamic, 16) reduction(+ : slipping)
+#pragma omp parallel for schedule(dynamic, 64) reduction(+ : slipping)
   for (int i = 0; i < n; ++i) {
     const Query& q = queries[i];
     Entry* e = map_.find(q.key.packed());

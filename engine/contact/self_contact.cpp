@@ -52,7 +52,7 @@ void SelfContactTerm::rebuild(const RodState& s) {
   // Distances in parallel (each pair its own entry), the list in the broad phase's order.
   const int nb = static_cast<int>(broad_.size());
   broad_geo_.resize(nb);
-#pragma omp parallel for schedule(dynamic, 16)
+#pragma omp parallel for schedule(dynamic, 64)
   for (int k = 0; k < nb; ++k) {
     const auto [a, b] = broad_[k];
     if (b - a <= exclude_) continue;
@@ -76,7 +76,7 @@ double SelfContactTerm::evaluate(const RodState& s, RodForces* out) {
   // Closest points in parallel (each candidate its own entry); the forces below in order.
   const int nc = static_cast<int>(candidates_.size());
   geo_.resize(nc);
-#pragma omp parallel for schedule(dynamic, 16)
+#pragma omp parallel for schedule(dynamic, 64)
   for (int k = 0; k < nc; ++k) {
     const int a = candidates_[k].a, b = candidates_[k].b;
     // Cannot touch yet: each end moved less than half the slack since the build.
@@ -134,7 +134,7 @@ double SelfContactTerm::accumulate(const RodState& s, RodForces& out) {
     const double r = p_.r;
     const int nc = static_cast<int>(contacts_.size());
     queries_.resize(nc);
-#pragma omp parallel for schedule(dynamic, 16)
+#pragma omp parallel for schedule(dynamic, 64)
     for (int i = 0; i < nc; ++i) {
       const WireContact& c = contacts_[i];
       const int a = c.a, b = c.b;

@@ -93,7 +93,7 @@ void WireShellTerm::rebuild(const RodState& s) {
   // Distances in parallel (one entry per broad pair), the list in the broad phase's order.
   const int nb = static_cast<int>(broad_.size());
   broad_dist2_.resize(nb);
-#pragma omp parallel for schedule(dynamic, 16)
+#pragma omp parallel for schedule(dynamic, 64)
   for (int k = 0; k < nb; ++k) {
     const auto [e, j] = broad_[k];  // (wire edge, ne + face): find_pairs_between
     const auto& v = mesh_.faces[j - ne];
@@ -144,14 +144,14 @@ void WireShellTerm::rebuild(const RodState& s) {
   vert_slack2_4_.resize(n_vert);
 #pragma omp parallel
   {
-#pragma omp for schedule(dynamic, 16)
+#pragma omp for schedule(dynamic, 64)
     for (int q = 0; q < n_edge; ++q) {
       const auto [e, k] = seg_edge_[q];
       const SegmentClosest c = segment_segment_closest(
           s.x[e], s.x[e + 1], s.shell_x[mesh_.edges[k][0]], s.shell_x[mesh_.edges[k][1]]);
       edge_slack2_4_[q] = quarter_slack2(c.dist2, Dc, p_.r);
     }
-#pragma omp for schedule(dynamic, 16)
+#pragma omp for schedule(dynamic, 64)
     for (int q = 0; q < n_vert; ++q) {
       const auto [e, vtx] = seg_vert_[q];
       const SegmentClosest c =
@@ -179,13 +179,13 @@ void WireShellTerm::rebuild(const RodState& s) {
   vert_owner_.resize(vert_owner_start_[n_vert]);
 #pragma omp parallel
   {
-#pragma omp for schedule(dynamic, 16)
+#pragma omp for schedule(dynamic, 64)
     for (int q = 0; q < n_edge; ++q) {
       const auto [e, k] = seg_edge_[q];
       const auto& ef = mesh_.edge_faces[k];
       edge_owner_[q] = {candidate_of(e, ef[0]), ef[1] >= 0 ? candidate_of(e, ef[1]) : -1};
     }
-#pragma omp for schedule(dynamic, 16)
+#pragma omp for schedule(dynamic, 64)
     for (int q = 0; q < n_vert; ++q) {
       const auto [e, vtx] = seg_vert_[q];
       int* slot = vert_owner_.data() + vert_owner_start_[q];
@@ -274,7 +274,7 @@ double WireShellTerm::evaluate(const RodState& s, RodForces* out) {
   const Vec3 no_n = Vec3::UnitZ();  // only for exactly coincident points (measure zero)
 #pragma omp parallel
   {
-#pragma omp for schedule(dynamic, 16)
+#pragma omp for schedule(dynamic, 64)
     for (int q = 0; q < n_cand; ++q) {
       const auto [e, f] = candidates_[q];
       const auto& v = mesh_.faces[f];
@@ -298,7 +298,7 @@ double WireShellTerm::evaluate(const RodState& s, RodForces* out) {
       const double ww[2] = {1.0 - tc.s, tc.s};
       contact(P, Q, fn, wi, ww, 2, v.data(), tc.w.data(), 3, +1.0, cand_hit_[q]);
     }
-#pragma omp for schedule(dynamic, 16)
+#pragma omp for schedule(dynamic, 64)
     for (int q = 0; q < n_edge; ++q) {  // - (wire edge, shell edge)
       const auto [e, k] = seg_edge_[q];
       const int v0 = mesh_.edges[k][0], v1 = mesh_.edges[k][1];
@@ -317,7 +317,7 @@ double WireShellTerm::evaluate(const RodState& s, RodForces* out) {
               s.shell_x[v0] + c.t * (s.shell_x[v1] - s.shell_x[v0]), no_n, wi, ww, 2, si, ws, 2,
               -1.0, edge_hit_[q]);
     }
-#pragma omp for schedule(dynamic, 16)
+#pragma omp for schedule(dynamic, 64)
     for (int q = 0; q < n_vert; ++q) {  // + (wire edge, shell vertex)
       const auto [e, vtx] = seg_vert_[q];
       vert_hit_[q].touching = false;
@@ -403,7 +403,7 @@ double WireShellTerm::accumulate(const RodState& s, RodForces& out) {
   const int np = static_cast<int>(face_pairs_.size());
   queries_.resize(np);
   edge_t_.resize(np);
-#pragma omp parallel for schedule(dynamic, 16)
+#pragma omp parallel for schedule(dynamic, 64)
   for (int i = 0; i < np; ++i) {
     const FacePair& c = face_pairs_[i];
     const int e = c.e;
