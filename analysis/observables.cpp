@@ -155,6 +155,25 @@ Order order_parameter(Centerline x) {
   return o;
 }
 
+Order curvature_weighted_order(Centerline x) {
+  Order o;
+  if (x.size() < 3) return o;
+  o.n = coil_normal(x);
+  double signed_sum = 0, abs_sum = 0;
+  Vec3 t0, t1;
+  for (std::size_t i = 1; i + 1 < x.size(); ++i) {
+    if (!edge_tangent(x, i - 1, t0) || !edge_tangent(x, i, t1)) continue;
+    const double c = t0.dot(t1);
+    if (!(c > -1)) continue;  // a complete fold-back: curvature undefined
+    const double turn = 2 * o.n.dot(t0.cross(t1)) / (1 + c);  // kappa_n,i ell_i [-]
+    signed_sum += turn;
+    abs_sum += std::abs(turn);
+  }
+  o.S = abs_sum > 0 ? signed_sum / abs_sum : 0.0;
+  o.D = 1 - std::abs(o.S);
+  return o;
+}
+
 // Paper: U_b_hat = U_b r^2 / (R E_w I), I = pi r^4 / 4 [-]; U_b [J], r, R [m], E_w [Pa].
 double bending_energy_hat(double U_b, double r, double R, double E_w) {
   const double I = std::numbers::pi * std::pow(r, 4) / 4;

@@ -36,6 +36,13 @@ struct Order {
 // Order parameter of paper section "Order-disorder transition" with the coil-normal axis, sums
 // over interior nodes. No turning (n <= 2 nodes, a straight wire) gives S = 0, D = 1.
 Order order_parameter(Centerline x);
+// Curvature-weighted order parameter S_kappa = int kappa_n ds / int |kappa_n| ds, kappa_n the
+// component along the axis n of order_parameter of the curvature binormal kappa b; discretely
+// kappa_n,i ell_i = n . 2 (t_{i-1} x t_i) / (1 + t_{i-1} . t_i) (the signed turning, independent
+// of the Voronoi lengths). Unlike the paper's S, which counts every unit of length alike, a
+// straight stretch (the entry chord from the hole) weighs nothing and a tight loop much. Same
+// axis and degenerate cases as order_parameter (no turning: S = 0, D = 1).
+Order curvature_weighted_order(Centerline x);
 // Paper: U_b_hat = U_b r^2 / (R E_w I).
 double bending_energy_hat(double U_b, double r, double R, double E_w);
 

@@ -190,4 +190,109 @@ Histogram histogram(std::span<const double> xs, double lo, double hi, int bins) 
   return h;
 }
 
+HistogramNormalFit fit_normal_to_histogram(const Histogram& h) {
+  HistogramNormalFit f;
+  const std::size_t nb = h.density.size();
+  // Start: the histogram's mean and standard deviation (bin centres, weights density * width).
+  double w = 0, m1 = 0, m2 = 0;
+  int filled = 0;
+  for (std::size_t i = 0; i < nb; ++i) {
+    const double c = 0.5 * (h.lo[i] + h.hi[i]), mass = h.density[i] * (h.hi[i] - h.lo[i]);
+    if (!(mass >= 0) || !std::isfinite(c)) return f;
+    w += mass;
+    m1 += mass * c;
+    filled += mass > 0 ? 1 : 0;
+  }
+  if (filled < 3 || !(w > 0)) return f;
+  m1 /= w;
+  for (std::size_t i = 0; i < nb; ++i) {
+    const double c = 0.5 * (h.lo[i] + h.hi[i]);
+    m2 += h.density[i] * (h.hi[i] - h.lo[i]) * (c - m1) * (c - m1);
+  }
+  double mu = m1, sigma = std::sqrt(m2 / w);
+  if (!(sigma > 0)) return f;
+  // Bin-averaged normal density and its derivatives in (mu, sigma) (analytic, via the density).
+  const auto model = [&](double m, double s, std::vector<double>& p, std::vector<double>& dm,
+                         std::vector<double>& ds) {
+    p.resize(nb);
+    dm.resize(nb);
+    ds.resize(nb);
+    for (std::size_t i = 0; i < nb; ++i) {
+      const double a = (h.lo[i] - m) / s, b = (h.hi[i] - m) / s, width = h.hi[i] - h.lo[i];
+      const double Phi_a = 0.5 * std::erfc(-a / std::sqrt(2.0));
+      const double Phi_b = 0.5 * std::erfc(-b / std::sqrt(2.0));
+      const double phi_a = std::exp(-0.5 * a * a) / std::sqrt(2 * M_PI);
+      const double phi_b = std::exp(-0.5 * b * b) / std::sqrt(2 * M_PI);
+      p[i] = (Phi_b - Phi_a) / width;
+      dm[i] = -(phi_b - phi_a) / (s * width);          // d/dmu of Phi((x - mu) / s) = -phi / s
+      ds[i] = -(b * phi_b - a * phi_a) / (s * width);  // d/dsigma: -phi (x - mu) / s^2
+    }
+  };
+  const auto rss_of = [&](const std::vector<double>& p) {
+    double r = 0;
+    for (std::size_t i = 0; i < nb; ++i) r += (h.density[i] - p[i]) * (h.density[i] - p[i]);
+    return r;
+  };
+  std::vector<double> p, dm, ds, p_try, dm_try, ds_try;
+  model(mu, sigma, p, dm, ds);
+  double rss = rss_of(p), lambda = 1e-3;
+  for (f.iterations = 0; f.iterations < 200; ++f.iterations) {
+    // Normal equations J^T J d = J^T r of the two parameters, damped (Marquardt: diagonal).
+    double a11 = 0, a12 = 0, a22 = 0, g1 = 0, g2 = 0;
+    for (std::size_t i = 0; i < nb; ++i) {
+      const double r = h.density[i] - p[i];
+      a11 += dm[i] * dm[i];
+      a12 += dm[i] * ds[i];
+      a22 += ds[i] * ds[i];
+      g1 += dm[i] * r;
+      g2 += ds[i] * r;
+    }
+    bool improved = false;
+    for (int tries = 0; tries < 30 && !improved; ++tries) {
+      const double b11 = a11 * (1 + lambda), b22 = a22 * (1 + lambda);
+      const double det = b11 * b22 - a12 * a12;
+      if (!(det > 0)) {
+        lambda *= 10;
+        continue;
+      }
+      const double d_mu = (b22 * g1 - a12 * g2) / det, d_sigma = (b11 * g2 - a12 * g1) / det;
+      const double mu_try = mu + d_mu, sigma_try = sigma + d_sigma;
+      if (sigma_try > 0) {
+        model(mu_try, sigma_try, p_try, dm_try, ds_try);
+        const double rss_try = rss_of(p_try);
+        if (rss_try <= rss) {
+          const bool converged = rss - rss_try <= 1e-14 * rss + 1e-300 &&
+                                 std::abs(d_mu) <= 1e-10 * sigma &&
+                                 std::abs(d_sigma) <= 1e-10 * sigma;
+          mu = mu_try;
+          sigma = sigma_try;
+          rss = rss_try;
+          std::swap(p, p_try);
+          std::swap(dm, dm_try);
+          std::swap(ds, ds_try);
+          lambda = std::max(lambda / 10, 1e-12);
+          improved = true;
+          if (converged) {
+            f.mu = mu;
+            f.sigma = sigma;
+            f.rms = std::sqrt(rss / static_cast<double>(nb));
+            f.ok = true;
+            return f;
+          }
+          continue;
+        }
+      }
+      lambda *= 10;
+    }
+    if (!improved) break;  // no step lowers the residual: at the minimum to round-off
+  }
+  if (std::isfinite(mu) && sigma > 0) {
+    f.mu = mu;
+    f.sigma = sigma;
+    f.rms = std::sqrt(rss / static_cast<double>(nb));
+    f.ok = f.iterations < 200;
+  }
+  return f;
+}
+
 }  // namespace wirepack::analysis

@@ -69,4 +69,20 @@ struct Histogram {
 };
 Histogram histogram(std::span<const double> xs, double lo, double hi, int bins);
 
+// The paper's "best-fitting density" (Fig. 6): the normal density N(mu, sigma^2) fitted to a
+// histogram by least squares, sum_i (density_i - p_i(mu, sigma))^2 over the bins, p_i the normal
+// density averaged over bin i, (Phi((hi_i - mu) / sigma) - Phi((lo_i - mu) / sigma)) /
+// (hi_i - lo_i), so that an exact histogram of a normal gives its parameters back whatever the
+// bin width. Levenberg-Marquardt from the histogram's own mean and standard deviation. Unlike the
+// maximum-likelihood fit it weights every bin alike, so the tails count as much as the peak; the
+// two differ where the data are not normal. ok = false with fewer than 3 bins holding samples or
+// when the iteration does not converge.
+struct HistogramNormalFit {
+  double mu = NaN, sigma = NaN;  // [unit of x]
+  double rms = NaN;              // root mean square residual over the bins [1/unit of x]
+  int iterations = 0;
+  bool ok = false;
+};
+HistogramNormalFit fit_normal_to_histogram(const Histogram& h);
+
 }  // namespace wirepack::analysis

@@ -227,6 +227,60 @@ TEST(OrderParameter, InvariantUnderRigidMotion) {
 // ----------------------------------------------------------------------------------------------
 // Degenerate inputs and the scaled bending energy
 
+// The curvature-weighted order parameter: +-1 on a circle, ~0 on the figure-eight, and an
+// entry chord that is straight weighs nothing in it (the paper's S counts its length).
+TEST(CurvatureWeightedOrder, CircleFigureEightAndStraightEntryChord) {
+  for (double sense : {1.0, -1.0}) {
+    const Order o = curvature_weighted_order(circle(0.8, 120, sense));
+    EXPECT_NEAR(o.S, sense, 1e-12);
+    EXPECT_NEAR(o.D, 0, 1e-12);
+  }
+  const int n = 2000;
+  std::vector<Vec3> eight;
+  for (int j = 0; j <= n + 1; ++j) {
+    const double t = 2 * pi * (j + 0.25) / n;
+    eight.emplace_back(std::cos(t), std::sin(t) * std::cos(t), 0);
+  }
+  EXPECT_LT(std::abs(curvature_weighted_order(eight).S), 4.0 / n);
+  // Three turns of radius a = 1 (120 nodes per turn), then a straight chord of 3 a along the
+  // last tangent: the paper's S = L_coil / L, S_kappa = 1.
+  std::vector<Vec3> x;
+  const int per_turn = 120;
+  for (int j = 0; j <= 3 * per_turn; ++j) {
+    const double t = 2 * pi * j / per_turn;
+    x.emplace_back(std::cos(t), std::sin(t), 0);
+  }
+  const double h = 2 * std::sin(pi / per_turn);  // chord of the coil's nodes
+  for (int k = 1; k <= 3.0 / h; ++k) x.push_back(Vec3(1, 0, 0) + k * h * Vec3(0, 1, 0));
+  EXPECT_LT(order_parameter(x).S, 0.97);  // 3 a of 6 pi a + 3 a is straight
+  EXPECT_NEAR(curvature_weighted_order(x).S, 1, 1e-12);
+}
+
+// A chord that turns against the coil (as the entry chord of coiling runs does): the paper's S
+// loses twice the chord's share of the length, S_kappa twice its share of the turning, here
+// (2 pi N - theta_c) / (2 pi N + theta_c) with the chord's angle theta_c = L_c / (5 a).
+TEST(CurvatureWeightedOrder, ReversedChordCountsByItsTurning) {
+  std::vector<Vec3> x;
+  const int per_turn = 200, turns = 3;
+  for (int j = 0; j <= turns * per_turn; ++j) {
+    const double t = 2 * pi * j / per_turn;
+    x.emplace_back(std::cos(t), std::sin(t), 0);
+  }
+  // At (1, 0) heading +y, continue on a circle of radius 5 turning clockwise (centre (6, 0)),
+  // through the same arc length per node, for theta_c = 0.6 (arc length 3).
+  const double ds = 2 * pi / per_turn, dtheta = ds / 5, theta_c = 0.6;
+  const int m = static_cast<int>(std::round(theta_c / dtheta));
+  for (int k = 1; k <= m; ++k) {
+    const double phi = pi - k * dtheta;  // angle about (6, 0), starting at (1, 0)
+    x.emplace_back(6 + 5 * std::cos(phi), 5 * std::sin(phi), 0);
+  }
+  const double turning = 2 * pi * turns, chord = m * dtheta;
+  const double L = turning * 1 + chord * 5;
+  EXPECT_NEAR(curvature_weighted_order(x).S, (turning - chord) / (turning + chord), 2e-3);
+  // The paper's S to a node's share of the length (ell / L ~ 1.5e-3; the end nodes do not count).
+  EXPECT_NEAR(order_parameter(x).S, (turning - 5 * chord) / L, 5e-3);
+}
+
 TEST(Observables, EmptyOneAndTwoNodeInputsGiveDocumentedZeros) {
   const std::vector<Vec3> none;
   const std::vector<Vec3> one{Vec3(1, 2, 3)};
