@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "sweep/atomic_file.hpp"
 #include "sweep/errors.hpp"
 #include "sweep/format.hpp"
 #include "sweep/plots.hpp"
@@ -47,13 +48,6 @@ std::string num(double x) {
   return csv_number(x);
 }
 
-std::vector<double> column(const RunRecord& rec, const std::string& name, std::size_t rows) {
-  std::vector<double> v(rows, NaN);
-  if (const Series* s = rec.find_series(name))
-    for (std::size_t i = 0; i < rows && i < s->values.size(); ++i) v[i] = s->values[i];
-  return v;
-}
-
 double last(const std::vector<double>& v) {
   return v.empty() ? NaN : v.back();
 }
@@ -67,11 +61,8 @@ std::vector<Run> read_runs(const std::vector<std::string>& dirs, const LWindow& 
     std::error_code ec;
     if (!fs::is_directory(runs_dir, ec))
       throw InputError(d + ": not a sweep directory (no runs/ in it)");
-    std::vector<fs::path> files;
-    for (const auto& e : fs::directory_iterator(runs_dir, ec))
-      if (e.path().extension() == ".h5") files.push_back(e.path());
-    std::sort(files.begin(), files.end());
-    for (const auto& f : files) {
+    for (const auto& name : list_run_files(d).files) {
+      const fs::path f = fs::path(d) / name;
       RunRecord rec;
       try {
         rec = read_run_file(f.string());
@@ -82,34 +73,30 @@ std::vector<Run> read_runs(const std::vector<std::string>& dirs, const LWindow& 
       if (!ids.insert(run_id(rec.config)).second) continue;
       Run r;
       r.file = f.string();
-      json scene = rec.config;
+      r.seed = rec.config.value("seed", std::uint64_t{0});
+      json scene = point_scene(rec.config);
       for (const auto& k : accuracy_knobs()) {
         const auto ptr = json::json_pointer("/numerics/" + k);
         r.knob.push_back(scene.contains(ptr) ? scene[ptr].get<double>() : NaN);
         if (scene.contains(ptr)) scene["numerics"].erase(k);
       }
-      r.seed = scene.value("seed", std::uint64_t{0});
-      scene.erase("seed");
-      scene.erase("output");
       r.scene = canonical_json(scene);
-      const std::size_t rows = rec.find_series("l") ? rec.find_series("l")->values.size() : 0;
-      r.series["l"] = column(rec, "l", rows);
-      for (const auto& s : compared_series()) r.series[s] = column(rec, s, rows);
+      const std::size_t rows = series_rows(rec);
+      r.series["l"] = series_column(rec, "l", rows);
+      for (const auto& s : compared_series()) r.series[s] = series_column(rec, s, rows);
       // N counts element pairs: N ell / r (contacts per wire radius) compares element lengths.
       const double ell = r.knob[0];
       const double wire_r = rec.config.contains(json::json_pointer("/wire/radius"))
                                 ? rec.config[json::json_pointer("/wire/radius")].get<double>()
                                 : NaN;
       for (auto& n : r.series["N"]) n *= ell / wire_r;
-      r.series["D"] = column(rec, "D", rows);
+      r.series["D"] = series_column(rec, "D", rows);
       r.l_end = last(r.series["l"]);
-      r.steps = last(column(rec, "steps", rows));
-      r.wall_s = last(column(rec, "wall_s", rows));
+      r.steps = last(series_column(rec, "steps", rows));
+      r.wall_s = last(series_column(rec, "wall_s", rows));
       double dmax = -1;
-      for (std::size_t i = 0; i < rows; ++i) {
-        const double l = r.series["l"][i], D = r.series["D"][i];
-        if (l >= w.l_min && l <= w.l_max && std::isfinite(D)) dmax = std::max(dmax, D);
-      }
+      for (const double D : values_in_window(r.series["l"], r.series["D"], w))
+        dmax = std::max(dmax, D);
       if (dmax >= 0) r.D_max = dmax;
       runs.push_back(std::move(r));
     }

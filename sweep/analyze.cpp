@@ -16,6 +16,7 @@
 #include "analysis/distributions.hpp"
 #include "analysis/purohit.hpp"
 #include "analysis/stats.hpp"
+#include "sweep/atomic_file.hpp"
 #include "sweep/critical_table.hpp"
 #include "sweep/errors.hpp"
 #include "sweep/format.hpp"
@@ -96,19 +97,62 @@ std::optional<double> to_double(const std::string& text) {
   return v;
 }
 
-// "L_MIN,L_MAX" from a command-line flag.
-LWindow window_from_text(const std::string& text, const std::string& what) {
+}  // namespace
+
+LWindow parse_l_window(const std::string& text, const std::string& flag) {
   const auto comma = text.find(',');
   if (comma != std::string::npos) {
     const auto a = to_double(text.substr(0, comma));
     const auto b = to_double(text.substr(comma + 1));
     if (a && b && *a >= 0 && *a < *b) return LWindow{*a, *b};
   }
-  throw InputError(what + ": must be L_MIN,L_MAX with 0 <= L_MIN < L_MAX, e.g. 5,50 (got \"" +
+  throw InputError(flag + ": must be L_MIN,L_MAX with 0 <= L_MIN < L_MAX, e.g. 5,50 (got \"" +
                    text + "\")");
 }
 
-}  // namespace
+RunFileList list_run_files(const std::string& dir_text) {
+  const fs::path dir(dir_text);
+  std::error_code ec;
+  const bool nested = fs::is_directory(dir / "runs", ec);
+  const fs::path runs_dir = nested ? dir / "runs" : dir;
+  const std::string prefix = nested ? "runs/" : "";
+  RunFileList list;
+  list.runs_dir = runs_dir.string();
+  for (const auto& e : fs::directory_iterator(runs_dir, ec)) {
+    const std::string name = e.path().filename().string();
+    const auto ends = [&](const std::string& s) {
+      return name.size() > s.size() && name.compare(name.size() - s.size(), s.size(), s) == 0;
+    };
+    if (ends(".h5.part"))
+      list.parts.push_back(prefix + name.substr(0, name.size() - 5));
+    else if (ends(".h5") && e.is_regular_file(ec))
+      list.files.push_back(prefix + name);
+  }
+  std::sort(list.files.begin(), list.files.end());
+  std::sort(list.parts.begin(), list.parts.end());
+  return list;
+}
+
+std::vector<double> series_column(const RunRecord& record, const std::string& name,
+                                  std::size_t rows) {
+  std::vector<double> v(rows, NaN);
+  if (const Series* s = record.find_series(name))
+    for (std::size_t i = 0; i < rows && i < s->values.size(); ++i) v[i] = s->values[i];
+  return v;
+}
+
+std::size_t series_rows(const RunRecord& record) {
+  const Series* l = record.find_series("l");
+  return l ? l->values.size() : 0;
+}
+
+std::vector<double> values_in_window(const std::vector<double>& l, const std::vector<double>& y,
+                                     const LWindow& w) {
+  std::vector<double> out;
+  for (std::size_t i = 0; i < l.size() && i < y.size(); ++i)
+    if (l[i] >= w.l_min && l[i] <= w.l_max && std::isfinite(y[i])) out.push_back(y[i]);
+  return out;
+}
 
 void apply_analysis_block(const json& block, const std::string& source, const std::string& pointer,
                           AnalysisSettings& s) {
@@ -321,10 +365,7 @@ void set_config(Run& r, const json& config) {
   if (!config.is_object()) return;
   r.config = config;
   r.seed = config.contains("seed") ? config["seed"] : json();
-  json point = config;
-  point.erase("seed");
-  point.erase("output");
-  r.key = canonical_json(point);
+  r.key = point_key(config);
 }
 
 double number_at(const json& config, const char* pointer) {
@@ -360,23 +401,13 @@ void read_run(const fs::path& dir, Run& r, const AnalysisSettings& settings) {
   r.wall_s = last_of(series_of(rec, "wall_s"));
   if (rec.status != RunStatus::Complete) return;
 
-  const std::size_t rows = l ? l->size() : 0;
-  const auto column = [&](const std::string& name) {
-    std::vector<double> v(rows, NaN);
-    if (const auto* s = series_of(rec, name))
-      for (std::size_t i = 0; i < rows && i < s->size(); ++i) v[i] = (*s)[i];
-    return v;
-  };
-  r.series["l"] = column("l");
-  for (const auto& name : kept_series()) r.series[name] = column(name);
+  const std::size_t rows = series_rows(rec);
+  r.series["l"] = series_column(rec, "l", rows);
+  for (const auto& name : kept_series()) r.series[name] = series_column(rec, name, rows);
 
   // D over the D window: its maximum (the paper's D) and its mean.
   const auto& L = r.series["l"];
-  const auto& D = r.series["D"];
-  std::vector<double> in_window;
-  for (std::size_t i = 0; i < rows; ++i)
-    if (L[i] >= settings.D_window.l_min && L[i] <= settings.D_window.l_max && std::isfinite(D[i]))
-      in_window.push_back(D[i]);
+  const std::vector<double> in_window = values_in_window(L, r.series["D"], settings.D_window);
   if (!in_window.empty()) {
     r.D = *std::max_element(in_window.begin(), in_window.end());
     r.D_avg = analysis::mean_sem(in_window).mean;
@@ -449,22 +480,10 @@ Directory open_directory(const std::string& dir_text, AnalysisSettings& settings
   }
 
   // Run files: DIR/runs/*.h5 (a sweep directory), else DIR/*.h5 (a directory of run files).
-  const bool nested = fs::is_directory(dir / "runs", ec);
-  const fs::path runs_dir = nested ? dir / "runs" : dir;
-  const std::string prefix = nested ? "runs/" : "";
+  const RunFileList found = list_run_files(dir_text);
   std::map<std::string, Run> by_file;
-  std::set<std::string> parts;
-  for (const auto& e : fs::directory_iterator(runs_dir, ec)) {
-    const std::string name = e.path().filename().string();
-    const auto ends = [&](const std::string& s) {
-      return name.size() > s.size() && name.compare(name.size() - s.size(), s.size(), s) == 0;
-    };
-    if (ends(".h5.part")) {
-      parts.insert(prefix + name.substr(0, name.size() - 5));
-    } else if (ends(".h5") && e.is_regular_file(ec)) {
-      by_file[prefix + name].file = prefix + name;
-    }
-  }
+  for (const auto& f : found.files) by_file[f].file = f;
+  const std::set<std::string> parts(found.parts.begin(), found.parts.end());
   for (const auto& f : parts) by_file[f].file = f;
   if (d.sweep) {
     for (const auto& sr : d.sweep->runs) {
@@ -474,7 +493,7 @@ Directory open_directory(const std::string& dir_text, AnalysisSettings& settings
     }
   }
   if (by_file.empty())
-    throw InputError(dir_text + ": no run files (" + (runs_dir / "*.h5").string() +
+    throw InputError(dir_text + ": no run files (" + (fs::path(found.runs_dir) / "*.h5").string() +
                      ") and no manifest: not a sweep directory");
   for (auto& [file, r] : by_file) {
     r.status = fs::exists(dir / file, ec) ? "" : "missing";
@@ -589,10 +608,7 @@ void group(Analysis& a, const std::optional<Sweep>& sweep) {
     Point& p = by_key[r.key];
     if (p.key.empty()) {
       p.key = r.key;
-      json c = r.config;
-      c.erase("seed");
-      c.erase("output");
-      flatten(c, "", p.leaves);
+      flatten(point_scene(r.config), "", p.leaves);
     }
   }
   std::vector<Point> points;
@@ -1202,11 +1218,11 @@ void remove_stale(const fs::path& dir, const std::set<std::string>& keep,
 }
 
 void apply_flags(const AnalyzeOptions& o, AnalysisSettings& s) {
-  if (o.D_window) s.D_window = window_from_text(*o.D_window, "--d-window");
+  if (o.D_window) s.D_window = parse_l_window(*o.D_window, "--d-window");
   for (const auto& text : o.fit_windows) {
     const auto eq = text.find('=');
     if (eq == std::string::npos) {
-      const LWindow w = window_from_text(text, "--fit-window");
+      const LWindow w = parse_l_window(text, "--fit-window");
       for (auto& [name, fw] : s.fit_windows) fw = w;
       continue;
     }
@@ -1214,7 +1230,7 @@ void apply_flags(const AnalyzeOptions& o, AnalysisSettings& s) {
     if (!is_exponent(name))
       throw InputError("--fit-window: unknown exponent \"" + name +
                        "\"; valid: " + exponent_names());
-    s.fit_windows[name] = window_from_text(text.substr(eq + 1), "--fit-window " + name);
+    s.fit_windows[name] = parse_l_window(text.substr(eq + 1), "--fit-window " + name);
   }
   if (o.at_l) {
     if (!std::isfinite(*o.at_l) || *o.at_l < 0)

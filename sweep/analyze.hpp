@@ -32,6 +32,7 @@
 #include <nlohmann/json.hpp>
 
 #include "sweep/critical_table.hpp"
+#include "sweep/run_file.hpp"
 
 namespace wirepack::sweep {
 
@@ -40,6 +41,30 @@ struct LWindow {
   double l_min = 5;   // [-]
   double l_max = 50;  // [-]
 };
+
+// "L_MIN,L_MAX" of a command-line flag (`flag` names it in the message): 0 <= L_MIN < L_MAX.
+// Throws InputError.
+LWindow parse_l_window(const std::string& text, const std::string& flag);
+
+// The run files of a directory: DIR/runs/*.h5 when DIR/runs exists (a sweep directory), else
+// DIR/*.h5; names relative to DIR ("runs/NAME.h5"), sorted. `parts`: the NAME.h5 of each
+// NAME.h5.part there (a run killed before its rename).
+struct RunFileList {
+  std::string runs_dir;  // the directory searched
+  std::vector<std::string> files;
+  std::vector<std::string> parts;
+};
+RunFileList list_run_files(const std::string& dir);
+
+// Series `name` of a run record as a column of `rows` values, NaN where the series is missing
+// or shorter.
+std::vector<double> series_column(const RunRecord& record, const std::string& name,
+                                  std::size_t rows);
+// The rows of a run record: the length of its series "l" (0 without one).
+std::size_t series_rows(const RunRecord& record);
+// The finite values of y at rows whose l lies in w, in row order.
+std::vector<double> values_in_window(const std::vector<double>& l, const std::vector<double>& y,
+                                     const LWindow& w);
 
 // One scaling exponent: y ~ l^exponent for the series `series`.
 struct ExponentSpec {

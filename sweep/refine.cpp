@@ -10,6 +10,7 @@
 #include <set>
 
 #include "sweep/analyze.hpp"
+#include "sweep/atomic_file.hpp"
 #include "sweep/critical_table.hpp"
 #include "sweep/errors.hpp"
 #include "sweep/format.hpp"

@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include "analysis/purohit.hpp"
+#include "sweep/atomic_file.hpp"
 #include "sweep/errors.hpp"
 #include "sweep/json_file.hpp"
 #include "sweep/run.hpp"
