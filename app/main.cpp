@@ -10,14 +10,14 @@
 
 #include <CLI/CLI.hpp>
 
-#include "sweep/accuracy.hpp"
-#include "sweep/analyze.hpp"
+#include "report/accuracy.hpp"
+#include "report/analyze.hpp"
+#include "report/refine.hpp"
 #include "sweep/atomic_file.hpp"
 #include "sweep/errors.hpp"
 #include "sweep/export.hpp"
 #include "sweep/format.hpp"
 #include "sweep/json_file.hpp"
-#include "sweep/refine.hpp"
 #include "sweep/run.hpp"
 #include "sweep/run_file.hpp"
 #include "sweep/scene_config.hpp"
@@ -27,6 +27,7 @@
 namespace {
 
 namespace fs = std::filesystem;
+using namespace wirepack::report;
 using namespace wirepack::sweep;
 
 constexpr int kOk = 0;

@@ -1,4 +1,4 @@
-#include "sweep/plots.hpp"
+#include "report/plots.hpp"
 
 #include <fcntl.h>
 #include <spawn.h>
@@ -17,9 +17,10 @@
 
 extern char** environ;
 
-namespace wirepack::sweep::plots {
+namespace wirepack::report::plots {
 
 namespace fs = std::filesystem;
+using sweep::format_number;
 
 namespace {
 
@@ -190,4 +191,4 @@ std::string render(const std::string& gnuplot, const std::string& script_path,
   return "";
 }
 
-}  // namespace wirepack::sweep::plots
+}  // namespace wirepack::report::plots

@@ -1,4 +1,4 @@
-#include "sweep/accuracy.hpp"
+#include "report/accuracy.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,22 +10,31 @@
 
 #include <nlohmann/json.hpp>
 
+#include "report/csv_table.hpp"
+#include "report/plots.hpp"
+#include "report/reductions.hpp"
+#include "report/sweep_dir.hpp"
 #include "sweep/atomic_file.hpp"
 #include "sweep/errors.hpp"
 #include "sweep/format.hpp"
-#include "sweep/plots.hpp"
 #include "sweep/run_file.hpp"
 #include "sweep/sweep_config.hpp"
 #include "sweep/sweep_manifest.hpp"
 
-namespace wirepack::sweep {
+namespace wirepack::report {
 
 namespace fs = std::filesystem;
 using json = nlohmann::json;
+using sweep::canonical_json;
+using sweep::InputError;
+using sweep::point_scene;
+using sweep::read_run_file;
+using sweep::run_id;
+using sweep::RunRecord;
+using sweep::RunStatus;
+using sweep::write_file_atomic;
 
 namespace {
-
-constexpr double NaN = std::numeric_limits<double>::quiet_NaN();
 
 // The compared series (relative RMS errors), in column order.
 const std::vector<std::string>& compared_series() {
@@ -43,10 +52,6 @@ struct Run {
   double l_end = NaN, steps = NaN, wall_s = NaN;
   double D_max = NaN;  // over the window
 };
-
-std::string num(double x) {
-  return csv_number(x);
-}
 
 double last(const std::vector<double>& v) {
   return v.empty() ? NaN : v.back();
@@ -410,4 +415,4 @@ AccuracyResult accuracy_study(const AccuracyOptions& o) {
   return result;
 }
 
-}  // namespace wirepack::sweep
+}  // namespace wirepack::report

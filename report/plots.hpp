@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace wirepack::sweep::plots {
+namespace wirepack::report::plots {
 
 // One data set of a panel.
 struct Curve {
@@ -48,4 +48,4 @@ std::string find_program(const std::string& program);
 std::string render(const std::string& gnuplot, const std::string& script_path,
                    const std::string& png_path);
 
-}  // namespace wirepack::sweep::plots
+}  // namespace wirepack::report::plots

@@ -3,7 +3,7 @@
 // snapshots, one run failed. Checks grouping, n, mean and SEM exactly, the listing of skipped runs,
 // the documented headers, recovery of synthetic power laws, NaN radii, the Purohit columns, the
 // distributions, determinism, and bad input.
-#include "sweep/analyze.hpp"
+#include "report/analyze.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -24,8 +24,10 @@
 #include "sweep/sweep_manifest.hpp"
 #include "sweep/temp_dir.hpp"
 
-namespace wirepack::sweep {
+namespace wirepack::report {
 namespace {
+
+using namespace wirepack::sweep;
 
 namespace fs = std::filesystem;
 using json = nlohmann::json;
@@ -544,4 +546,4 @@ TEST(AnalysisBlock, DefaultsAndEveryKey) {
 }
 
 }  // namespace
-}  // namespace wirepack::sweep
+}  // namespace wirepack::report

@@ -24,9 +24,9 @@
 #include <string>
 #include <vector>
 
-#include "sweep/analyze.hpp"
+#include "report/settings.hpp"
 
-namespace wirepack::sweep {
+namespace wirepack::report {
 
 // The knobs of the study, in column order: "element_length", "shell_mesh_size",
 // "quasistatic_ratio", "tolerance" (scene keys under /numerics).
@@ -64,4 +64,4 @@ double relative_rms_error(const std::vector<double>& l, const std::vector<double
 // files or OUT cannot be created; nothing is written then.
 AccuracyResult accuracy_study(const AccuracyOptions& options);
 
-}  // namespace wirepack::sweep
+}  // namespace wirepack::report

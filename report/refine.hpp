@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-namespace wirepack::sweep {
+namespace wirepack::report {
 
 struct RefineOptions {
   std::string dir;                 // sweep directory (written by `wirepack sweep`)
@@ -41,4 +41,4 @@ struct RefineOutcome {
 // transition parameter (mu_s, eps, xi, rho), or an option is out of range.
 RefineOutcome refine_sweep(const RefineOptions& options);
 
-}  // namespace wirepack::sweep
+}  // namespace wirepack::report

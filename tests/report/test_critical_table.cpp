@@ -1,6 +1,6 @@
-// critical.csv, phase_diagram.csv and the phase-diagram plot (sweep/critical_table.hpp) on
+// critical.csv, phase_diagram.csv and the phase-diagram plot (report/critical_table.hpp) on
 // in-memory grid points: a mu_s x eps sweep with a known critical line mu_c(eps).
-#include "sweep/critical_table.hpp"
+#include "report/critical_table.hpp"
 
 #include <cmath>
 #include <map>
@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-namespace wirepack::sweep {
+namespace wirepack::report {
 namespace {
 
 using json = nlohmann::json;
@@ -160,4 +160,4 @@ TEST(CriticalTable, OnlyOneAxisAndNoTransitionAxes) {
 }
 
 }  // namespace
-}  // namespace wirepack::sweep
+}  // namespace wirepack::report

@@ -1,34 +1,23 @@
-#include "sweep/critical_table.hpp"
+#include "report/critical_table.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <sstream>
 
+#include "report/csv_table.hpp"
 #include "sweep/format.hpp"
 #include "sweep/sweep_config.hpp"
 #include "sweep/sweep_manifest.hpp"
 
-namespace wirepack::sweep {
+namespace wirepack::report {
 
 using json = nlohmann::json;
 using analysis::NaN;
+using sweep::canonical_json;
+using sweep::csv_field;
 
 namespace {
-
-std::string num(double x) {
-  return csv_number(x);
-}
-std::string cell(const json& v) {
-  return csv_cell(v);
-}
-
-// "/mu_s" -> "mu_s", "/numerics/element_length" -> "numerics.element_length" (as analyze).
-std::string name_of(const std::string& pointer) {
-  std::string s = pointer.substr(1);
-  std::replace(s.begin(), s.end(), '/', '.');
-  return s;
-}
 
 std::string join_row(const std::vector<std::string>& cells) {
   std::string s;
@@ -118,7 +107,7 @@ std::vector<CriticalSlice> critical_slices(
 std::string critical_csv(const std::vector<std::string>& axes,
                          const std::vector<CriticalSlice>& slices) {
   std::vector<std::string> header = {"axis"};
-  for (const auto& a : axes) header.push_back(name_of(a));
+  for (const auto& a : axes) header.push_back(column_name(a));
   for (const char* h : {"scale",      "points",       "values",   "n_failed",  "n_missing",
                         "x_min",      "x_max",        "status",   "model",     "side",
                         "x_c",        "x_c_lo",       "x_c_hi",   "b",         "b_lo",
@@ -128,7 +117,7 @@ std::string critical_csv(const std::vector<std::string>& axes,
   std::string text = join_row(header);
   for (const auto& s : slices) {
     const auto& f = s.fit;
-    std::vector<std::string> row = {name_of(s.axis)};
+    std::vector<std::string> row = {column_name(s.axis)};
     for (const auto& a : axes) {
       std::string c;
       for (const auto& [ptr, v] : s.at)
@@ -179,7 +168,7 @@ std::string phase_diagram_csv(const std::vector<std::string>& axes,
       {"axis", "across", "across_value", "status", "model", "x_c", "x_c_lo", "x_c_hi", "note"});
   for (const auto& s : slices) {
     if (s.at.size() != 1) continue;
-    text += join_row({name_of(s.axis), name_of(s.at[0].first), cell(s.at[0].second),
+    text += join_row({column_name(s.axis), column_name(s.at[0].first), cell(s.at[0].second),
                       csv_field(s.fit.status), s.fit.model, num(s.fit.x_c), num(s.fit.x_c_lo),
                       num(s.fit.x_c_hi), csv_field(s.fit.note)});
   }
@@ -215,10 +204,10 @@ std::vector<std::pair<std::string, std::string>> phase_diagram_plots(
       if (s.axis == axis && s.at.size() == 1 && s.at[0].second.is_number() && s.fit.status == "ok")
         line.push_back({s.at[0].second.get<double>(), s.fit.x_c, s.fit.x_c_lo, s.fit.x_c_hi});
     std::sort(line.begin(), line.end());
-    const std::string name = "phase_" + name_of(axis);
+    const std::string name = "phase_" + column_name(axis);
     std::ostringstream g;
-    g << "# Phase diagram: D (mean over seeds, colour) over " << name_of(across) << " and "
-      << name_of(axis) << ", with the critical " << name_of(axis)
+    g << "# Phase diagram: D (mean over seeds, colour) over " << column_name(across) << " and "
+      << column_name(axis) << ", with the critical " << column_name(axis)
       << " (line) and its 95 % bootstrap interval (band); data: ../curves.csv, "
          "../phase_diagram.csv\n"
       << "# Render: gnuplot " << name << ".gp\n"
@@ -229,9 +218,10 @@ std::vector<std::pair<std::string, std::string>> phase_diagram_plots(
       << "  set terminal png noenhanced size 900,700\n"
       << "}\n"
       << "set output out\n"
-      << "set title \"D and the critical " << name_of(axis) << " against " << name_of(across)
+      << "set title \"D and the critical " << column_name(axis) << " against "
+      << column_name(across) << "\"\n"
+      << "set xlabel \"" << column_name(across) << "\"\nset ylabel \"" << column_name(axis)
       << "\"\n"
-      << "set xlabel \"" << name_of(across) << "\"\nset ylabel \"" << name_of(axis) << "\"\n"
       << "set cblabel \"D (mean over seeds)\"\nset palette rgbformulae 33,13,10\n"
       << "set key outside top center horizontal\nset offsets graph 0.05, graph 0.05, graph "
          "0.05, graph 0.05\n";
@@ -257,4 +247,4 @@ std::vector<std::pair<std::string, std::string>> phase_diagram_plots(
   return out;
 }
 
-}  // namespace wirepack::sweep
+}  // namespace wirepack::report

@@ -14,7 +14,7 @@
 
 #include "analysis/critical.hpp"
 
-namespace wirepack::sweep {
+namespace wirepack::report {
 
 // One grid point as the critical-point fits see it.
 struct CriticalPoint {
@@ -69,4 +69,4 @@ std::vector<std::pair<std::string, std::string>> phase_diagram_plots(
     const std::vector<std::string>& axes, const std::vector<CriticalPoint>& points,
     const std::vector<CriticalSlice>& slices);
 
-}  // namespace wirepack::sweep
+}  // namespace wirepack::report

@@ -1,4 +1,4 @@
-#include "sweep/refine.hpp"
+#include "report/refine.hpp"
 
 #include <unistd.h>
 
@@ -9,9 +9,9 @@
 #include <fstream>
 #include <set>
 
-#include "sweep/analyze.hpp"
+#include "report/analyze.hpp"
+#include "report/critical_table.hpp"
 #include "sweep/atomic_file.hpp"
-#include "sweep/critical_table.hpp"
 #include "sweep/errors.hpp"
 #include "sweep/format.hpp"
 #include "sweep/json_file.hpp"
@@ -19,10 +19,11 @@
 #include "sweep/sweep_manifest.hpp"
 #include "sweep/sweep_runner.hpp"
 
-namespace wirepack::sweep {
+namespace wirepack::report {
 
 namespace fs = std::filesystem;
 using json = nlohmann::json;
+using namespace wirepack::sweep;  // refine drives the sweep runner: configuration, runs, manifest
 
 namespace {
 
@@ -276,4 +277,4 @@ RefineOutcome refine_sweep(const RefineOptions& o) {
   return out;
 }
 
-}  // namespace wirepack::sweep
+}  // namespace wirepack::report

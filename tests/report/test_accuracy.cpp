@@ -1,7 +1,7 @@
 // The accuracy-vs-time study (issue 7): the relative RMS error against known answers, and the
 // study's small version on real runs (two element lengths x two seeds and two tolerances, rigid
 // sphere, l = 2.5): ladders, references, the seed floor and the documented CSV columns.
-#include "sweep/accuracy.hpp"
+#include "report/accuracy.hpp"
 
 #include <cmath>
 #include <fstream>
@@ -16,8 +16,10 @@
 #include "sweep/sweep_runner.hpp"
 #include "sweep/temp_dir.hpp"
 
-namespace wirepack::sweep {
+namespace wirepack::report {
 namespace {
+
+using namespace wirepack::sweep;
 
 using wirepack::testing::TempDir;
 
@@ -165,4 +167,4 @@ TEST(Accuracy, BadInputIsAnInputError) {
 }
 
 }  // namespace
-}  // namespace wirepack::sweep
+}  // namespace wirepack::report
