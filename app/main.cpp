@@ -10,13 +10,14 @@
 
 #include <CLI/CLI.hpp>
 
-#include "sweep/accuracy.hpp"
-#include "sweep/analyze.hpp"
+#include "report/accuracy.hpp"
+#include "report/analyze.hpp"
+#include "report/refine.hpp"
+#include "sweep/atomic_file.hpp"
 #include "sweep/errors.hpp"
 #include "sweep/export.hpp"
 #include "sweep/format.hpp"
 #include "sweep/json_file.hpp"
-#include "sweep/refine.hpp"
 #include "sweep/run.hpp"
 #include "sweep/run_file.hpp"
 #include "sweep/scene_config.hpp"
@@ -26,6 +27,7 @@
 namespace {
 
 namespace fs = std::filesystem;
+using namespace wirepack::report;
 using namespace wirepack::sweep;
 
 // Threads inside a run fork and join about twenty parallel loops per step (tens of us each).
@@ -205,16 +207,7 @@ int cmd_refine(const RefineOptions& o) {
 }
 
 int cmd_accuracy(AccuracyOptions o, const std::string& window) {
-  if (!window.empty()) {
-    const auto comma = window.find(',');
-    char* end = nullptr;
-    const double a = comma == std::string::npos ? NAN : std::strtod(window.c_str(), &end);
-    const double b =
-        comma == std::string::npos ? NAN : std::strtod(window.c_str() + comma + 1, &end);
-    if (!std::isfinite(a) || !std::isfinite(b) || *end != '\0' || !(a < b))
-      throw InputError("--window: must be L_MIN,L_MAX with L_MIN < L_MAX (got \"" + window + "\")");
-    o.window = {a, b};
-  }
+  if (!window.empty()) o.window = parse_l_window(window, "--window");
   const AccuracyResult r = accuracy_study(o);
   std::cout << "accuracy: " << r.runs << " complete runs, " << r.ladders << " ladders, " << r.rows
             << " rows\nCSV:   " << r.csv << '\n';
@@ -230,6 +223,8 @@ int cmd_export(const std::string& run_file, const std::string& csv, const std::s
     if (!csv.empty()) export_csv(run_file, csv);
     if (!xmf.empty()) export_xdmf(run_file, xmf);
   } catch (const RunFileError& e) {
+    throw InputError(e.what());
+  } catch (const WriteError& e) {
     throw InputError(e.what());
   }
   return kOk;

@@ -173,11 +173,11 @@ struct Simulation::Impl {
     }
   }
 
-  double energy_of(const char* name) const {
-    double U = 0.0;
-    for (size_t k = 0; k < assembly.terms.size(); ++k) {
-      if (assembly.terms[k]->name() == name) U += term_energy[k];
-    }
+  // The energy of the last evaluation summed per term type.
+  std::array<double, kTermTypes> energy_by_type() const {
+    std::array<double, kTermTypes> U{};
+    for (size_t k = 0; k < assembly.terms.size(); ++k)
+      U[static_cast<int>(assembly.terms[k]->type())] += term_energy[k];
     return U;
   }
 };
@@ -257,14 +257,16 @@ std::span<const Vec3> Simulation::all_nodes() const {
 }
 
 Energies Simulation::energies() const {
+  const auto U = impl_->energy_by_type();
+  const auto of = [&](TermType t) { return U[static_cast<int>(t)]; };
   Energies e;
-  e.U_b = impl_->energy_of("bend");
-  e.U_t = impl_->energy_of("twist");
-  e.U_s = impl_->energy_of("stretch");
-  e.U_m = impl_->energy_of("membrane");
-  e.U_sb = impl_->energy_of("shell_bending");
-  e.U_contact = impl_->energy_of("wall") + impl_->energy_of("self_contact") +
-                impl_->energy_of("wire_shell") + impl_->energy_of("shell_self");
+  e.U_b = of(TermType::kBend);
+  e.U_t = of(TermType::kTwist);
+  e.U_s = of(TermType::kStretch);
+  e.U_m = of(TermType::kMembrane);
+  e.U_sb = of(TermType::kShellBending);
+  e.U_contact = of(TermType::kWall) + of(TermType::kSelfContact) + of(TermType::kWireShell) +
+                of(TermType::kShellSelf);
   const RodState& s = impl_->state;
   e.E_kin = impl_->assembly.mass.kinetic_energy(s.v, s.n_free);
   if (s.has_twist()) {

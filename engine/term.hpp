@@ -4,6 +4,7 @@
 #include <string>
 
 #include "engine/rod/rod_state.hpp"
+#include "engine/term_type.hpp"
 
 namespace wirepack {
 
@@ -27,6 +28,8 @@ class Term {
   virtual ~Term() = default;
   virtual DofGroup dofs() const { return DofGroup::kWire; }
   virtual std::string name() const = 0;
+  // Where energies() reports this term's energy.
+  virtual TermType type() const = 0;
   // Adds the generalised forces -dU/dq of this term into `out` and returns U [J].
   // May update caches of the term (contact lists, counters), hence non-const.
   virtual double accumulate(const RodState& s, RodForces& out) = 0;

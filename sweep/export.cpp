@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "sweep/atomic_file.hpp"
 #include "sweep/format.hpp"
 #include "sweep/run_file.hpp"
 
@@ -13,29 +14,6 @@ namespace wirepack::sweep {
 namespace fs = std::filesystem;
 
 namespace {
-
-// Writes `text` to `path` through `path.tmp` and a rename (docs/design.md §6.3).
-void write_text_file(const std::string& path, const std::string& text) {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw RunFileError("cannot create " + tmp);
-    out << text;
-    out.close();
-    if (!out) {
-      std::error_code ec;
-      fs::remove(tmp, ec);
-      throw RunFileError("cannot write " + tmp);
-    }
-  }
-  std::error_code ec;
-  fs::rename(tmp, path, ec);
-  if (ec) {
-    std::error_code ignored;
-    fs::remove(tmp, ignored);
-    throw RunFileError("rename " + tmp + " to " + path + ": " + ec.message());
-  }
-}
 
 std::string xml_escape(const std::string& s) {
   std::string out;
@@ -99,7 +77,7 @@ void export_csv(const std::string& run_file, const std::string& csv_path) {
     }
     out << '\n';
   }
-  write_text_file(csv_path, out.str());
+  write_file_atomic(csv_path, out.str());
 }
 
 void export_xdmf(const std::string& run_file, const std::string& xmf_path) {
@@ -169,7 +147,7 @@ void export_xdmf(const std::string& run_file, const std::string& xmf_path) {
   x << "    </Grid>\n"
     << "  </Domain>\n"
     << "</Xdmf>\n";
-  write_text_file(xmf_path, x.str());
+  write_file_atomic(xmf_path, x.str());
 }
 
 }  // namespace wirepack::sweep

@@ -328,6 +328,18 @@ std::string canonical_json(const json& j) {
   return canonical(j).dump();
 }
 
+json point_scene(const json& resolved_scene) {
+  if (!resolved_scene.is_object()) return nullptr;
+  json point = resolved_scene;
+  point.erase("seed");
+  point.erase("output");
+  return point;
+}
+
+std::string point_key(const json& resolved_scene) {
+  return resolved_scene.is_object() ? canonical_json(point_scene(resolved_scene)) : "";
+}
+
 std::string run_id(const json& resolved_scene) {
   std::uint64_t h = 14695981039346656037ull;  // FNV-1a 64 offset basis
   for (unsigned char c : canonical_json(resolved_scene)) {

@@ -73,6 +73,13 @@ std::string canonical_json(const nlohmann::json& j);
 // FNV-1a 64 of canonical_json(resolved scene), as 16 lower-case hex digits.
 std::string run_id(const nlohmann::json& resolved_scene);
 
+// The grid point of a resolved scene: the scene without its seed and its output settings, so
+// runs of one point differ only in the seed (docs/design.md §5.8). Not an object: null.
+nlohmann::json point_scene(const nlohmann::json& resolved_scene);
+// canonical_json(point_scene(...)): the key that groups runs into grid points ("" when the
+// scene is not an object).
+std::string point_key(const nlohmann::json& resolved_scene);
+
 // Expected relative cost of a run, for longest-first scheduling (not a time in any unit).
 // With L = l_max R injected, elements of length ell and the mass scaling q, the step is bounded
 // by the axial wave crossing an element, dt ~ ell q / v, so a run takes ~ L / (ell q) steps of

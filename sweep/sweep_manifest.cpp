@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "sweep/atomic_file.hpp"
 #include "sweep/errors.hpp"
 #include "sweep/format.hpp"
 #include "sweep/run_file.hpp"
@@ -41,20 +42,6 @@ std::optional<std::size_t> to_size(const std::string& s) {
   const auto res = std::from_chars(s.data(), end, v);
   if (s.empty() || res.ec != std::errc() || res.ptr != end) return std::nullopt;
   return v;
-}
-
-// Writes all of `text` to `fd`; false on error.
-bool write_all(int fd, const std::string& text) {
-  std::size_t done = 0;
-  while (done < text.size()) {
-    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      return false;
-    }
-    done += static_cast<std::size_t>(n);
-  }
-  return true;
 }
 
 }  // namespace
@@ -145,23 +132,6 @@ json manifest_json(const Sweep& sweep, const Shard& shard,
             {"complete", n[2]},
             {"failed", n[3]}}},
           {"runs", std::move(runs)}};
-}
-
-void write_file_atomic(const std::string& path, const std::string& text) {
-  const std::string tmp = path + ".tmp." + std::to_string(::getpid());
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) throw std::runtime_error("cannot create " + tmp + ": " + std::strerror(errno));
-  const bool ok = write_all(fd, text) && ::fsync(fd) == 0;
-  const int err = errno;
-  if (::close(fd) != 0 || !ok) {
-    ::unlink(tmp.c_str());
-    throw std::runtime_error("cannot write " + tmp + ": " + std::strerror(ok ? errno : err));
-  }
-  if (::rename(tmp.c_str(), path.c_str()) != 0) {
-    const int e = errno;
-    ::unlink(tmp.c_str());
-    throw std::runtime_error("cannot rename " + tmp + " to " + path + ": " + std::strerror(e));
-  }
 }
 
 std::string csv_number(double x) {

@@ -64,10 +64,6 @@ struct ManifestEntry {
 nlohmann::json manifest_json(const Sweep& sweep, const Shard& shard,
                              const std::vector<ManifestEntry>& entries);
 
-// Writes `text` to PATH.tmp.<pid>, fsyncs and renames it to `path`, so readers see the old or
-// the new file, never a partial one. Throws std::runtime_error.
-void write_file_atomic(const std::string& path, const std::string& text);
-
 // One line of the joblog: a finished run attempt.
 struct JobLogLine {
   std::string id, file;

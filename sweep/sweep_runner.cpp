@@ -14,6 +14,7 @@
 #include <set>
 #include <thread>
 
+#include "sweep/atomic_file.hpp"
 #include "sweep/errors.hpp"
 #include "sweep/format.hpp"
 #include "sweep/run.hpp"

@@ -52,6 +52,7 @@ class SelfContactTerm : public Term {
  public:
   explicit SelfContactTerm(const SelfContactParams& p);
   std::string name() const override { return "self_contact"; }
+  TermType type() const override { return TermType::kSelfContact; }
   double accumulate(const RodState& s, RodForces& out) override;
   double energy(const RodState& s) override;
   double omega_max_sq(const RodInertia& inertia) const override;

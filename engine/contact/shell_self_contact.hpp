@@ -77,6 +77,7 @@ class ShellSelfContactTerm : public Term {
   // vertex_mass <= 0 or exclusion < t (the rest mesh would then touch itself).
   ShellSelfContactTerm(const ShellMesh& mesh, const ShellSelfContactParams& p);
   std::string name() const override { return "shell_self"; }
+  TermType type() const override { return TermType::kShellSelf; }
   DofGroup dofs() const override { return DofGroup::kShell; }
   double accumulate(const RodState& s, RodForces& out) override;
   double energy(const RodState& s) override { return evaluate(s, nullptr); }

@@ -27,6 +27,7 @@ class SphereWallTerm : public Term {
  public:
   explicit SphereWallTerm(const SphereWallParams& p);
   std::string name() const override { return "wall"; }
+  TermType type() const override { return TermType::kWall; }
   double accumulate(const RodState& s, RodForces& out) override;
   double energy(const RodState& s) override;
   double omega_max_sq(const RodInertia& inertia) const override;

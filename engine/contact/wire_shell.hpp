@@ -46,6 +46,7 @@ class WireShellTerm : public Term {
  public:
   WireShellTerm(const ShellMesh& mesh, const WireShellParams& p);
   std::string name() const override { return "wire_shell"; }
+  TermType type() const override { return TermType::kWireShell; }
   DofGroup dofs() const override { return DofGroup::kCoupling; }
   double accumulate(const RodState& s, RodForces& out) override;
   double energy(const RodState& s) override { return evaluate(s, nullptr); }

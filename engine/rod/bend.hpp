@@ -12,6 +12,7 @@ class BendTerm : public Term {
  public:
   explicit BendTerm(double EI) : EI_(EI) {}
   std::string name() const override { return "bend"; }
+  TermType type() const override { return TermType::kBend; }
   double accumulate(const RodState& s, RodForces& out) override;
   double energy(const RodState& s) override;
   double omega_max_sq(const RodInertia& inertia) const override;

@@ -9,6 +9,7 @@ class StretchTerm : public Term {
  public:
   explicit StretchTerm(double EA) : EA_(EA) {}
   std::string name() const override { return "stretch"; }
+  TermType type() const override { return TermType::kStretch; }
   double accumulate(const RodState& s, RodForces& out) override;
   double energy(const RodState& s) override;
   double omega_max_sq(const RodInertia& inertia) const override;

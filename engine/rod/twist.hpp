@@ -13,6 +13,7 @@ class TwistTerm : public Term {
  public:
   explicit TwistTerm(double GJ) : GJ_(GJ) {}
   std::string name() const override { return "twist"; }
+  TermType type() const override { return TermType::kTwist; }
   double accumulate(const RodState& s, RodForces& out) override;
   // Transports the reference frames of a copy of `s` to its positions first, so the energy is
   // a function of (x, theta) given the stored frames: this is what finite differences see.

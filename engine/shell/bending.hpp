@@ -54,6 +54,7 @@ class BendingTerm : public ShellTerm {
   // Copies what it needs of the mesh (topology, rest shape, clamped flags).
   BendingTerm(const ShellMesh& mesh, const ShellMaterial& material);
   std::string name() const override { return "shell_bending"; }
+  TermType type() const override { return TermType::kShellBending; }
   double accumulate(const Vec3List& x, Vec3List& f) override;
   double energy(const Vec3List& x) override;
   // Highest mode: omega^2 = kOmegaMargin lambda_rest / m, lambda_rest the largest eigenvalue

@@ -19,6 +19,7 @@ class MembraneTerm : public ShellTerm {
  public:
   MembraneTerm(const ShellMesh& mesh, const ShellMaterial& material);
   std::string name() const override { return "membrane"; }
+  TermType type() const override { return TermType::kMembrane; }
   double accumulate(const Vec3List& x, Vec3List& f) override;
   double energy(const Vec3List& x) override;
   // omega_max^2 <= s * max_v sum_{f at v} lambda_f / m (see rest_stiffness_bound) with the

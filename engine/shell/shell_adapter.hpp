@@ -13,6 +13,7 @@ class ShellTermAdapter : public Term {
   ShellTermAdapter(std::unique_ptr<ShellTerm> term, double min_vertex_mass)
       : term_(std::move(term)), m_(min_vertex_mass) {}
   std::string name() const override { return term_->name(); }
+  TermType type() const override { return term_->type(); }
   DofGroup dofs() const override { return DofGroup::kShell; }
   double accumulate(const RodState& s, RodForces& out) override {
     return term_->accumulate(s.shell_x, out.shell_f);

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/term_type.hpp"
 #include "engine/types.hpp"
 
 namespace wirepack {
@@ -39,6 +40,7 @@ class ShellTerm {
  public:
   virtual ~ShellTerm() = default;
   virtual std::string name() const = 0;
+  virtual TermType type() const = 0;
   // Adds -dU/dx for every vertex into f (nv) and returns U [J].
   virtual double accumulate(const Vec3List& x, Vec3List& f) = 0;
   virtual double energy(const Vec3List& x) = 0;

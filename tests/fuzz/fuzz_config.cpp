@@ -12,7 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "sweep/analyze.hpp"
+#include "report/analyze.hpp"
 #include "sweep/errors.hpp"
 #include "sweep/json_file.hpp"
 #include "sweep/scene_config.hpp"
@@ -20,6 +20,7 @@
 
 namespace {
 
+using namespace wirepack::report;
 using namespace wirepack::sweep;
 
 constexpr const char* kSource = "fuzz.json";

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "sweep/atomic_file.hpp"
 #include "sweep/json_file.hpp"
 #include "sweep/temp_dir.hpp"
 

@@ -15,6 +15,7 @@
 
 #include "engine/contact/shell_self_contact.hpp"
 #include "engine/contact/triangle_distance.hpp"
+#include "engine/fd_harness.hpp"
 #include "engine/shell/mesh_builders.hpp"
 
 namespace wirepack {
@@ -66,39 +67,14 @@ Vec3 rotate_z(const Vec3& p, double a) {
               p.z());
 }
 
-// Max |F + dU/dx| / max |F| over every shell coordinate, by central differences at steps
-// hrel * kT; prints the ladder and the observed orders log10(err_k / err_k+1).
-std::vector<double> fd_ladder(ShellSelfContactTerm& term, RodState s) {
-  RodForces f;
-  f.reset(s);
-  term.accumulate(s, f);
-  double fmax = 0;
-  for (const auto& v : f.shell_f) fmax = std::max(fmax, v.cwiseAbs().maxCoeff());
-  std::vector<double> errs;
-  std::printf("  fd:");
-  for (double hrel : {1e-2, 1e-3, 1e-4, 1e-5, 1e-6}) {
-    const double h = hrel * kT;
-    double err = 0;
-    for (size_t i = 0; i < s.shell_x.size(); ++i) {
-      for (int k = 0; k < 3; ++k) {
-        const double keep = s.shell_x[i][k];
-        s.shell_x[i][k] = keep + h;
-        const double up = term.energy(s);
-        s.shell_x[i][k] = keep - h;
-        const double dn = term.energy(s);
-        s.shell_x[i][k] = keep;
-        err = std::max(err, std::abs(f.shell_f[i][k] + (up - dn) / (2 * h)));
-      }
-    }
-    errs.push_back(err / fmax);
-    std::printf(" h=%.0e:%.2e", hrel, err / fmax);
-  }
-  std::printf("\n  orders:");
-  for (size_t k = 0; k + 1 < errs.size(); ++k) {
-    std::printf(" %.2f", std::log10(errs[k] / errs[k + 1]));
-  }
-  std::printf("\n");
-  return errs;
+// Max |F + dU/dx| / max |F| over every coordinate (tests/engine/fd_harness.hpp; here the shell
+// vertices), by central differences at steps hrel * kT; prints the ladder and the observed
+// orders log10(err_k / err_k+1).
+std::vector<double> fd_ladder(ShellSelfContactTerm& term, const RodState& s) {
+  const testing::FdReport r = testing::fd_check(term, s, kT, {1e-2, 1e-3, 1e-4, 1e-5, 1e-6});
+  testing::print_report(r);
+  testing::print_orders(r);
+  return r.err;
 }
 
 // Central differences: O(h^2) while truncation dominates (order >= 1.8 between the first two

@@ -8,6 +8,7 @@
 #include <Eigen/Dense>
 
 #include "engine/contact/wire_shell.hpp"
+#include "engine/fd_harness.hpp"
 #include "engine/shell/mesh_builders.hpp"
 
 namespace wirepack {
@@ -120,28 +121,10 @@ TEST(WireShell, GradientMatchesFiniteDifferencesAndBalances) {
   for (const auto& v : f.f) total += v, fmax = std::max(fmax, v.norm());
   for (const auto& v : f.shell_f) total += v, fmax = std::max(fmax, v.norm());
   EXPECT_LT(total.norm(), 1e-12 * fmax);
-  std::printf("  fd:");
-  std::vector<double> errs;
-  for (double hrel : {1e-3, 1e-4, 1e-5, 1e-6}) {
-    const double h = hrel * kR;
-    double err = 0;
-    auto probe = [&](Vec3& coord, const Vec3& force) {
-      for (int k = 0; k < 3; ++k) {
-        const double keep = coord[k];
-        coord[k] = keep + h;
-        const double up = term.energy(s);
-        coord[k] = keep - h;
-        const double dn = term.energy(s);
-        coord[k] = keep;
-        err = std::max(err, std::abs(force[k] + (up - dn) / (2 * h)));
-      }
-    };
-    for (size_t i = 0; i < s.x.size(); ++i) probe(s.x[i], f.f[i]);
-    for (size_t i = 0; i < s.shell_x.size(); ++i) probe(s.shell_x[i], f.shell_f[i]);
-    errs.push_back(err / fmax);
-    std::printf(" h=%.0e:%.2e", hrel, err / fmax);
-  }
-  std::printf("\n");
+  // Wire nodes and shell vertices (tests/engine/fd_harness.hpp).
+  const testing::FdReport r = testing::fd_check(term, s, kR, {1e-3, 1e-4, 1e-5, 1e-6});
+  testing::print_report(r);
+  const std::vector<double>& errs = r.err;
   EXPECT_LT(*std::min_element(errs.begin(), errs.end()), 1e-6);
   EXPECT_LT(errs[1], 0.1 * errs[0] + 1e-9);
 }

@@ -3,6 +3,7 @@
 // continuum energy, the Poisson coupling (cylinder vs spherical cap), consistency for every
 // constant curvature (and the mesh dependence of the average-normal variant), and the
 // stiffness estimate behind omega_max_sq.
+#include "engine/fd_harness.hpp"
 #include "engine/shell/bending.hpp"
 #include "engine/shell/mesh_builders.hpp"
 
@@ -67,35 +68,13 @@ double mean_edge_length(const ShellMesh& m) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Finite-difference check: max over all coordinates of |f + dU/dx| relative to max |f|, with
-// central differences at steps h * length_scale (the error ladder shows O(h^2) until round-off).
+// Finite-difference check (tests/engine/fd_harness.hpp): max over all coordinates of
+// |f + dU/dx| relative to max |f| at steps h * length_scale, printed as a ladder.
 std::vector<double> fd_ladder(ShellTerm& term, const Vec3List& x0, double length_scale,
                               const std::vector<double>& steps) {
-  Vec3List f(x0.size(), Vec3::Zero());
-  term.accumulate(x0, f);
-  double fmax = 1e-300;
-  for (const auto& v : f) fmax = std::max(fmax, v.cwiseAbs().maxCoeff());
-  std::vector<double> err;
-  Vec3List x = x0;
-  for (double hrel : steps) {
-    const double h = hrel * length_scale;
-    double e = 0.0;
-    for (size_t i = 0; i < x.size(); ++i) {
-      for (int k = 0; k < 3; ++k) {
-        x[i][k] = x0[i][k] + h;
-        const double Up = term.energy(x);
-        x[i][k] = x0[i][k] - h;
-        const double Um = term.energy(x);
-        x[i][k] = x0[i][k];
-        e = std::max(e, std::abs(f[i][k] + (Up - Um) / (2 * h)));
-      }
-    }
-    err.push_back(e / fmax);
-  }
-  std::printf("  fd:");
-  for (size_t k = 0; k < steps.size(); ++k) std::printf(" h=%.0e:%.2e", steps[k], err[k]);
-  std::printf("\n");
-  return err;
+  const testing::FdReport r = testing::fd_check(term, x0, length_scale, steps);
+  testing::print_report(r);
+  return r.err;
 }
 
 Vec3List perturbed(const Vec3List& x, double amp, unsigned seed) {

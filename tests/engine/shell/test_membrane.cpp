@@ -19,35 +19,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// Central differences of term.energy in every coordinate at steps h * length_scale; error
-// max |f + dU/dx| / max |f| (same report as the rod harness).
-testing::FdReport fd_check_shell(ShellTerm& term, const Vec3List& x0, double length_scale,
-                                 const std::vector<double>& steps) {
-  Vec3List f(x0.size(), Vec3::Zero());
-  term.accumulate(x0, f);
-  double fmax = 1e-300;
-  for (const Vec3& v : f) fmax = std::max(fmax, v.cwiseAbs().maxCoeff());
-  testing::FdReport rep;
-  for (double hrel : steps) {
-    const double h = hrel * length_scale;
-    double err = 0.0;
-    Vec3List x = x0;
-    for (size_t i = 0; i < x.size(); ++i) {
-      for (int k = 0; k < 3; ++k) {
-        x[i][k] = x0[i][k] + h;
-        const double up = term.energy(x);
-        x[i][k] = x0[i][k] - h;
-        const double um = term.energy(x);
-        x[i][k] = x0[i][k];
-        err = std::max(err, std::abs(f[i][k] + (up - um) / (2 * h)));
-      }
-    }
-    rep.h.push_back(hrel);
-    rep.err.push_back(err / fmax);
-  }
-  return rep;
-}
-
 using testing::paper_material;
 using testing::perturbed;
 
@@ -68,8 +39,8 @@ TEST(MembraneFd, GradientMatchesFiniteDifferences) {
   const double edge = mesh_quality(mesh).edge_mean;
   for (unsigned seed = 1; seed <= 3; ++seed) {
     for (double amp : {0.1, 0.3}) {
-      const auto r = fd_check_shell(term, perturbed(mesh.rest, amp * edge, seed), edge,
-                                    testing::default_fd_steps());
+      const auto r = testing::fd_check(term, perturbed(mesh.rest, amp * edge, seed), edge,
+                                       testing::default_fd_steps());
       testing::print_report(r);
       EXPECT_LT(r.best(), 1e-7);
       EXPECT_LT(r.err[1], r.err[0] / 30.0);

@@ -1,0 +1,51 @@
+#pragma once
+// gnuplot output of `wirepack analyze`: self-contained scripts (the data inline as datablocks, so
+// a script can be edited and rerun alone: `gnuplot NAME.gp` writes NAME.png) and their
+// rendering to PNG through a temporary name and a rename.
+#include <array>
+#include <string>
+#include <vector>
+
+namespace wirepack::report::plots {
+
+// One data set of a panel.
+struct Curve {
+  enum class Style {
+    ErrorLines,  // rows (x, y, y error): points joined by lines, with error bars
+    Points,      // rows (x, y, -)
+    Lines,       // rows (x, y, -)
+    Boxes,       // rows (x centre, y, box width): a histogram
+    Dots,        // rows (x, y, -): small grey points (a shell's vertices under a packing)
+  };
+  std::string title;  // key entry ("" = none)
+  Style style = Style::Points;
+  std::vector<std::array<double, 3>> rows;  // rows with a non-finite x or y are left out
+};
+
+struct Panel {
+  std::string title, xlabel, ylabel;
+  bool logx = false, logy = false;
+  bool y_from_zero = false;      // y range starts at 0
+  bool equal_axes = false;       // one unit is as long on x as on y (pictures of packings)
+  std::string key = "top left";  // where the key goes (gnuplot `set key` position)
+  std::vector<Curve> curves;
+};
+
+// A script drawing `panels` in a rows x cols layout under `page_title` (one panel: no multiplot,
+// the page title heads the panel's) into the PNG named by the gnuplot variable `out`, default
+// `png_name`; `comment` heads the script (lines prefixed with "# "). A panel without any finite
+// point shows "no data".
+std::string script(const std::string& comment, const std::string& page_title,
+                   const std::vector<Panel>& panels, int rows, int cols,
+                   const std::string& png_name, int width, int height);
+
+// The program's path: `program` itself when it contains a '/', else the first executable
+// PATH entry of that name; "" when there is none.
+std::string find_program(const std::string& program);
+
+// Runs `gnuplot -e "out='PNG.tmp'" SCRIPT`, then renames PNG.tmp to PNG. Returns "" on success,
+// else what went wrong (gnuplot's messages are then in PNG.log; nothing else is left behind).
+std::string render(const std::string& gnuplot, const std::string& script_path,
+                   const std::string& png_path);
+
+}  // namespace wirepack::report::plots

@@ -1,0 +1,280 @@
+#include "report/refine.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <set>
+
+#include "report/analyze.hpp"
+#include "report/critical_table.hpp"
+#include "sweep/atomic_file.hpp"
+#include "sweep/errors.hpp"
+#include "sweep/format.hpp"
+#include "sweep/json_file.hpp"
+#include "sweep/sweep_config.hpp"
+#include "sweep/sweep_manifest.hpp"
+#include "sweep/sweep_runner.hpp"
+
+namespace wirepack::report {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+using namespace wirepack::sweep;  // refine drives the sweep runner: configuration, runs, manifest
+
+namespace {
+
+constexpr int kDefaultPointsPerRound = 4;
+constexpr int kUntilCiRounds = 10;  // rounds allowed by --until-ci without --budget
+
+// The sweep of DIR: refine.json (written by an earlier refine) or the manifest's.
+Sweep load_current(const fs::path& dir) {
+  std::error_code ec;
+  const fs::path refined = dir / "refine.json";
+  if (fs::is_regular_file(refined, ec)) return load_sweep(refined.string());
+  const std::string manifest = find_manifest(dir.string());
+  if (manifest.empty())
+    throw InputError(dir.string() +
+                     ": no manifest.json and no refine.json: not a sweep directory (run "
+                     "`wirepack sweep SWEEP.json --out DIR` first)");
+  const json m = load_json_file(manifest);
+  if (!m.is_object() || !m.contains("sweep"))
+    throw InputError(manifest + ": /sweep: required key is missing (not a sweep manifest)");
+  return parse_sweep(m["sweep"], manifest + " (/sweep)");
+}
+
+std::string text_of(const json& v) {
+  if (v.is_number()) return format_number(v.get<double>());
+  if (v.is_string()) return v.get<std::string>();
+  return v.dump();
+}
+
+std::string name_of(const std::string& pointer) {
+  std::string s = pointer.substr(1);
+  std::replace(s.begin(), s.end(), '/', '.');
+  return s;
+}
+
+std::string slice_text(const CriticalSlice& s) {
+  std::string t;
+  for (const auto& [ptr, v] : s.at)
+    t += (t.empty() ? "" : ", ") + name_of(ptr) + " = " + text_of(v);
+  return t.empty() ? "(one slice)" : t;
+}
+
+double width(const analysis::CriticalResult& f) {
+  return f.status == "ok" ? f.x_c_hi - f.x_c_lo : NAN;
+}
+
+// 4 significant digits, for messages.
+std::string short_number(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof(buf), "%.4g", x);
+  return buf;
+}
+
+std::string fit_text(const analysis::CriticalResult& f) {
+  if (!std::isfinite(f.x_c)) return f.status + (f.note.empty() ? "" : ": " + f.note);
+  std::string t = "x_c = " + short_number(f.x_c);
+  if (f.status == "ok")
+    t += " [" + short_number(f.x_c_lo) + ", " + short_number(f.x_c_hi) + "], width " +
+         short_number(width(f));
+  return t + " (" + f.status + ", " + f.model + ", " + std::to_string(f.points) + " points)";
+}
+
+// Appends lines to DIR/refine_log.csv (header when new).
+void append_log(const fs::path& dir, const std::vector<std::string>& lines) {
+  const fs::path path = dir / "refine_log.csv";
+  std::error_code ec;
+  const bool fresh = !fs::exists(path, ec);
+  std::ofstream out(path, std::ios::app);
+  if (fresh)
+    out << "time,axis,slice,listed_runs,points,values,status,model,x_c,x_c_lo,x_c_hi,width,"
+           "added\n";
+  for (const auto& l : lines) out << l << '\n';
+}
+
+std::size_t pending_runs(const fs::path& dir, const Sweep& sw) {
+  std::size_t n = 0;
+  std::error_code ec;
+  for (const auto& r : sw.runs) n += !fs::exists(dir / r.file, ec);
+  return n;
+}
+
+}  // namespace
+
+RefineOutcome refine_sweep(const RefineOptions& o) {
+  const fs::path dir(o.dir);
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec))
+    throw InputError(o.dir + ": no such directory (give a directory written by `wirepack sweep`)");
+  if (o.runs < 0) throw InputError("--runs: must be >= 1 (got " + std::to_string(o.runs) + ")");
+  if (o.until_ci && !(std::isfinite(*o.until_ci) && *o.until_ci > 0))
+    throw InputError("--until-ci: must be a width > 0 in units of the refined parameter (got " +
+                     format_number(*o.until_ci) + ")");
+  if (o.budget && *o.budget < 0)
+    throw InputError("--budget: must be >= 0 runs (got " + std::to_string(*o.budget) + ")");
+  Sweep sw = load_current(dir);
+
+  // The refined parameter: a transition parameter that is a grid axis with numbers.
+  std::vector<std::string> candidates;
+  for (const auto& a : sw.axes)
+    if (is_transition_axis(a.pointer)) candidates.push_back(a.pointer);
+  std::string axis;
+  const std::string wanted = o.axis.empty() || o.axis[0] == '/' ? o.axis : "/" + o.axis;
+  std::string valid;
+  for (const auto& c : candidates) valid += (valid.empty() ? "" : ", ") + c.substr(1);
+  if (!wanted.empty()) {
+    if (std::find(candidates.begin(), candidates.end(), wanted) == candidates.end())
+      throw InputError("--axis: " + o.axis + " is not a swept transition parameter of " + o.dir +
+                       " (swept: " + (valid.empty() ? "none" : valid) + ")");
+    axis = wanted;
+  } else if (std::find(candidates.begin(), candidates.end(), "/mu_s") != candidates.end()) {
+    axis = "/mu_s";
+  } else if (candidates.size() == 1) {
+    axis = candidates[0];
+  } else {
+    throw InputError(
+        o.dir + ": " +
+        (candidates.empty()
+             ? "no transition parameter (mu_s, eps, xi, rho) is a grid axis"
+             : "several transition parameters are swept (" + valid + "): choose one with --axis"));
+  }
+  const GridAxis& grid_axis = *std::find_if(sw.axes.begin(), sw.axes.end(),
+                                            [&](const GridAxis& a) { return a.pointer == axis; });
+  for (const auto& v : grid_axis.values)
+    if (!v.is_number())
+      throw InputError(o.dir + ": /grid/" + grid_axis.key + ": refine needs numbers (got " +
+                       v.dump() + ")");
+
+  const std::size_t seeds = sw.seeds.size();
+  const std::size_t per_round =
+      o.runs > 0 ? std::max<std::size_t>(1, static_cast<std::size_t>(o.runs) / seeds)
+                 : kDefaultPointsPerRound;
+  DirLock lock((dir / ".lock.refine").string());  // one refine per directory
+
+  RefineOutcome out;
+  const std::size_t listed_at_start = sw.listed_points.size() * seeds;
+  // Without --budget and --until-ci: one round, or finishing an interrupted one.
+  const bool one_round = !o.budget && !o.until_ci;
+  const bool interrupted = pending_runs(dir, sw) > 0;
+  std::optional<std::size_t> budget;
+  if (o.budget) budget = static_cast<std::size_t>(*o.budget);
+  const fs::path refined = dir / "refine.json";
+  if (fs::exists(refined, ec)) out.sweep_file = refined.string();
+
+  for (int round = 0;; ++round) {
+    SweepOptions so;
+    so.dir = o.dir;
+    so.threads = o.threads;
+    so.progress = o.progress;
+    const SweepOutcome ran = run_sweep(sw, so);
+    out.failed = ran.failed;
+
+    AnalyzeOptions ao;
+    ao.dir = o.dir;
+    ao.critical_ranges = o.critical_ranges;
+    const CriticalData data = read_critical_data(ao);
+    const auto slices = critical_slices(data.axes, data.points, data.settings.bootstrap_resamples,
+                                        axis, data.settings.critical_ranges);
+    out.listed_runs = sw.listed_points.size() * seeds;
+    out.lines.clear();
+    for (const auto& s : slices)
+      out.lines.push_back(name_of(axis) + " at " + slice_text(s) + ": " + fit_text(s.fit));
+
+    // Stop?
+    const bool narrow = o.until_ci && !slices.empty() &&
+                        std::all_of(slices.begin(), slices.end(), [&](const CriticalSlice& s) {
+                          return width(s.fit) <= *o.until_ci;
+                        });
+    if (!budget) {
+      const std::size_t rounds = one_round ? 1 : kUntilCiRounds;
+      budget =
+          listed_at_start + rounds * per_round * seeds * std::max<std::size_t>(1, slices.size());
+    }
+    std::string stop;
+    if (narrow)
+      stop = "every interval of x_c is at most " + format_number(*o.until_ci) + " wide";
+    else if (one_round && (interrupted || round > 0))
+      stop = interrupted ? "finished the interrupted round (rerun to refine further)"
+                         : "one round done (rerun, or give --budget / --until-ci, for more)";
+    else if (out.listed_runs + seeds > *budget)
+      stop = "run budget reached: " + std::to_string(out.listed_runs) + " refinement runs of " +
+             std::to_string(*budget);
+
+    // Proposals: per slice, as many whole points as the budget leaves.
+    json points = sw.resolved.contains("points") ? sw.resolved["points"] : json::array();
+    std::set<std::string> existing;
+    for (const auto& r : sw.runs) existing.insert(canonical_json(r.point_values));
+    std::vector<std::string> log;
+    std::size_t left = stop.empty() ? (*budget - out.listed_runs) / seeds : 0;
+    std::size_t added = 0;
+    for (const auto& s : slices) {
+      std::vector<double> xs;
+      const bool done = o.until_ci && width(s.fit) <= *o.until_ci;
+      if (left > 0 && !done)
+        xs = analysis::propose_refinement(slice_samples(s, data.points), s.fit,
+                                          static_cast<int>(std::min(per_round, left)), s.options);
+      std::string added_text;
+      for (const double x : xs) {
+        json point = json::object();
+        bool complete = true;
+        for (const auto& a : sw.axes) {
+          if (a.pointer == axis) {
+            point[a.key] = x;
+            continue;
+          }
+          const auto it = std::find_if(s.at.begin(), s.at.end(),
+                                       [&](const auto& p) { return p.first == a.pointer; });
+          if (it != s.at.end() && !it->second.is_null())
+            point[a.key] = it->second;
+          else if (a.values.size() == 1)
+            point[a.key] = a.values[0];
+          else
+            complete = false;
+        }
+        if (!complete || !existing.insert(canonical_json(point)).second) continue;
+        points.push_back(point);
+        if (!added_text.empty()) added_text += ' ';
+        added_text += format_number(x);
+        ++added;
+        --left;
+      }
+      const auto& f = s.fit;
+      const auto n = [](double v) { return std::isnan(v) ? std::string("nan") : format_number(v); };
+      log.push_back(utc_now_iso8601() + "," + name_of(axis) + "," + csv_field(slice_text(s)) + "," +
+                    std::to_string(out.listed_runs) + "," + std::to_string(f.points) + "," +
+                    std::to_string(f.values) + "," + csv_field(f.status) + "," + f.model + "," +
+                    n(f.x_c) + "," + n(f.x_c_lo) + "," + n(f.x_c_hi) + "," + n(width(f)) + "," +
+                    added_text);
+      if (o.progress)
+        *o.progress << "refine: " << name_of(axis) << " at " << slice_text(s) << ": " << fit_text(f)
+                    << (added_text.empty() ? "" : "; adding " + added_text) << '\n';
+    }
+    append_log(dir, log);
+    if (added == 0) {
+      const bool usable = std::any_of(slices.begin(), slices.end(),
+                                      [](const CriticalSlice& s) { return s.fit.points >= 2; });
+      out.stop = !stop.empty() ? stop
+                 : usable      ? "no new value to add (the gaps are below the rounding)"
+                               : "nothing to refine: no slice has two grid values with a finite D "
+                                 "(failed runs, or a D window beyond l_max)";
+      break;
+    }
+    // Record the new points before running them: a killed refine continues from here.
+    json resolved = sw.resolved;
+    resolved["points"] = points;
+    sw = parse_sweep(resolved, refined.string());
+    write_file_atomic(refined.string(), sw.resolved.dump(2) + "\n");
+    out.sweep_file = refined.string();
+    out.added_runs += added * seeds;
+    ++out.rounds;
+  }
+  out.listed_runs = sw.listed_points.size() * seeds;
+  return out;
+}
+
+}  // namespace wirepack::report

@@ -1,0 +1,179 @@
+#include "report/tables.hpp"
+
+#include "analysis/stats.hpp"
+#include "report/csv_table.hpp"
+#include "sweep/sweep_manifest.hpp"
+
+namespace wirepack::report {
+
+using sweep::csv_field;
+
+namespace {
+
+std::vector<std::string> param_cells(const Analysis& a, const GridPoint& p) {
+  std::vector<std::string> cells;
+  for (const auto& ptr : a.params) cells.push_back(cell(leaf(p, ptr)));
+  return cells;
+}
+
+std::vector<std::string> mean_sem_cells(std::span<const double> xs) {
+  const auto m = analysis::mean_sem(xs);
+  return {num(m.mean), num(m.sem)};
+}
+
+// The run quantities averaged in curves.csv, with their accessors.
+const std::vector<std::pair<std::string, double RunData::*>>& curve_quantities() {
+  static const std::vector<std::pair<std::string, double RunData::*>> q = {
+      {"D", &RunData::D},          {"D_avg", &RunData::D_avg}, {"U_b_hat", &RunData::U_b_hat},
+      {"K", &RunData::K},          {"N", &RunData::N},         {"l_reached", &RunData::l_reached},
+      {"wall_s", &RunData::wall_s}};
+  return q;
+}
+
+}  // namespace
+
+std::string runs_csv(const Analysis& a) {
+  Table t(cat(std::vector<std::string>{"file", "point"}, a.param_names,
+              std::vector<std::string>{"seed", "status", "reason", "D_l_min", "D_l_max", "D",
+                                       "D_avg", "l_reached", "wall_s", "U_b_hat", "K", "N"}));
+  for (const auto& r : a.runs) {
+    std::vector<std::string> params(a.params.size());
+    if (r.point >= 0) params = param_cells(a, a.points[r.point]);
+    t.add(cat(
+        std::vector<std::string>{csv_field(r.file), r.point >= 0 ? std::to_string(r.point) : ""},
+        params,
+        std::vector<std::string>{cell(r.seed), r.status, csv_field(r.reason),
+                                 num(a.settings.D_window.l_min), num(a.settings.D_window.l_max),
+                                 num(r.D), num(r.D_avg), num(r.l_reached), num(r.wall_s),
+                                 num(r.U_b_hat), num(r.K), num(r.N)}));
+  }
+  return t.text();
+}
+
+std::string curves_csv(const Analysis& a) {
+  std::vector<std::string> header = {"point"};
+  header.insert(header.end(), a.param_names.begin(), a.param_names.end());
+  for (const char* h : {"n", "n_failed", "n_missing", "D_l_min", "D_l_max"}) header.push_back(h);
+  for (const auto& [name, field] : curve_quantities()) {
+    header.push_back(name + "_mean");
+    header.push_back(name + "_sem");
+  }
+  Table t(header);
+  for (std::size_t i = 0; i < a.points.size(); ++i) {
+    const GridPoint& p = a.points[i];
+    std::vector<std::string> row =
+        cat(std::vector<std::string>{std::to_string(i)}, param_cells(a, p));
+    for (const std::size_t n : {p.complete.size(), p.failed, p.missing})
+      row.push_back(std::to_string(n));
+    row.push_back(num(a.settings.D_window.l_min));
+    row.push_back(num(a.settings.D_window.l_max));
+    for (const auto& [name, field] : curve_quantities())
+      for (auto& c : mean_sem_cells(values(p, field))) row.push_back(std::move(c));
+    t.add(row);
+  }
+  return t.text();
+}
+
+std::string view_csv(const Analysis& a, const View& v) {
+  std::vector<std::string> header;
+  for (const auto& o : v.others) header.push_back(column_name(o));
+  header.push_back(v.name);
+  for (const char* h : {"n", "D_mean", "D_sem", "D_l_min", "D_l_max"}) header.push_back(h);
+  Table t(header);
+  for (const std::size_t i : v.order) {
+    const GridPoint& p = a.points[i];
+    std::vector<std::string> row;
+    for (const auto& o : v.others) row.push_back(cell(leaf(p, o)));
+    row.push_back(cell(leaf(p, v.pointer)));
+    row.push_back(std::to_string(p.complete.size()));
+    for (auto& c : mean_sem_cells(values(p, &RunData::D))) row.push_back(std::move(c));
+    row.push_back(num(a.settings.D_window.l_min));
+    row.push_back(num(a.settings.D_window.l_max));
+    t.add(row);
+  }
+  return t.text();
+}
+
+std::string exponents_csv(const Analysis& a, const Fits& fits) {
+  Table t(cat(
+      std::vector<std::string>{"point"}, a.param_names,
+      std::vector<std::string>{"name", "series", "value", "stderr", "stderr_ols",
+                               "stderr_bootstrap", "log_prefactor", "window_l_min", "window_l_max",
+                               "fit_l_min", "fit_l_max", "n_points", "n_seeds", "method", "ok"}));
+  for (std::size_t i = 0; i < a.points.size(); ++i) {
+    for (std::size_t k = 0; k < exponent_specs().size(); ++k) {
+      const auto& spec = exponent_specs()[k];
+      const ExponentFit& f = fits[i][k];
+      const LWindow& w = a.settings.fit_windows.at(spec.name);
+      const bool boot = use_bootstrap(f);
+      t.add(cat(std::vector<std::string>{std::to_string(i)}, param_cells(a, a.points[i]),
+                std::vector<std::string>{
+                    spec.name, spec.series, num(f.fit.exponent), num(reported_stderr(f)),
+                    num(f.fit.stderr_), num(f.stderr_bootstrap), num(f.fit.log_prefactor),
+                    num(w.l_min), num(w.l_max), num(f.fit.l_min), num(f.fit.l_max),
+                    std::to_string(f.fit.n_points), std::to_string(f.seeds),
+                    boot ? "ols+bootstrap" : "ols", f.fit.ok ? "true" : "false"}));
+    }
+  }
+  return t.text();
+}
+
+std::string series_csv(const Analysis& a, const std::vector<MeanSeries>& ms) {
+  std::vector<std::string> header =
+      cat(std::vector<std::string>{"point"}, a.param_names, std::vector<std::string>{"l", "n"});
+  const auto names = cat(kept_series(), predicted_series());
+  for (const auto& name : names) {
+    header.push_back(name + "_mean");
+    header.push_back(name + "_sem");
+  }
+  Table t(header);
+  for (std::size_t i = 0; i < a.points.size(); ++i) {
+    const auto params = param_cells(a, a.points[i]);
+    const MeanSeries& m = ms[i];
+    for (std::size_t j = 0; j < m.l.size(); ++j) {
+      std::vector<std::string> row =
+          cat(std::vector<std::string>{std::to_string(i)}, params,
+              std::vector<std::string>{num(m.l[j]), std::to_string(m.n[j])});
+      for (const auto& name : names) {
+        row.push_back(num(m.q.at(name)[j].mean));
+        row.push_back(num(m.q.at(name)[j].sem));
+      }
+      t.add(row);
+    }
+  }
+  return t.text();
+}
+
+std::string distributions_csv(const Analysis& a, const std::vector<Samples>& samples,
+                              const Distributions& ds) {
+  Table t(cat(std::vector<std::string>{"point"}, a.param_names,
+              std::vector<std::string>{"quantity", "l", "n_runs", "n", "mu", "mu_stderr", "sigma",
+                                       "sigma_stderr", "ok", "bin", "ln_lo", "ln_hi", "count",
+                                       "density", "fit_density"}));
+  for (std::size_t i = 0; i < a.points.size(); ++i) {
+    const auto params = param_cells(a, a.points[i]);
+    for (const Distribution& d : ds[i]) {
+      const std::vector<std::string> fit = {d.quantity,
+                                            num(a.distribution_l),
+                                            std::to_string(samples[i].runs),
+                                            std::to_string(d.fit.n),
+                                            num(d.fit.mu),
+                                            num(d.fit.mu_stderr),
+                                            num(d.fit.sigma),
+                                            num(d.fit.sigma_stderr),
+                                            d.fit.ok ? "true" : "false"};
+      const auto head = cat(std::vector<std::string>{std::to_string(i)}, params, fit);
+      if (d.hist.lo.empty()) {
+        t.add(cat(head, std::vector<std::string>{"", "nan", "nan", "0", "nan", "nan"}));
+        continue;
+      }
+      for (std::size_t b = 0; b < d.hist.lo.size(); ++b)
+        t.add(cat(head, std::vector<std::string>{std::to_string(b), num(d.hist.lo[b]),
+                                                 num(d.hist.hi[b]), std::to_string(d.hist.count[b]),
+                                                 num(d.hist.density[b]), num(d.fit_density[b])}));
+    }
+  }
+  return t.text();
+}
+
+}  // namespace wirepack::report

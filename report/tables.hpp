@@ -1,0 +1,20 @@
+#pragma once
+// The CSV tables of `wirepack analyze` (docs/design.md §4.6; columns in the README's section
+// "Analysis"): text of each file from an Analysis and its reductions.
+#include <string>
+#include <vector>
+
+#include "report/reductions.hpp"
+
+namespace wirepack::report {
+
+std::string runs_csv(const Analysis& a);
+std::string curves_csv(const Analysis& a);
+// D against one swept parameter.
+std::string view_csv(const Analysis& a, const View& v);
+std::string exponents_csv(const Analysis& a, const Fits& fits);
+std::string series_csv(const Analysis& a, const std::vector<MeanSeries>& ms);
+std::string distributions_csv(const Analysis& a, const std::vector<Samples>& samples,
+                              const Distributions& ds);
+
+}  // namespace wirepack::report
