@@ -174,6 +174,25 @@ Order curvature_weighted_order(Centerline x) {
   return o;
 }
 
+std::size_t entry_chord_start(Centerline x, double r, double slack, std::size_t exclude,
+                              double hole_zone,
+                              const std::function<double(const Vec3&)>& distance_to_shell) {
+  const std::size_t n = x.size();
+  if (n == 0) return 0;
+  const Vec3& hole = x[n - 1];
+  const double wire2 = (2 * r + slack) * (2 * r + slack);
+  for (std::size_t i = n; i-- > 0;) {
+    if ((x[i] - hole).norm() < hole_zone) continue;
+    bool touches = distance_to_shell(x[i]) < r + slack;
+    for (std::size_t j = 0; j < n && !touches; ++j) {
+      const std::size_t gap = i > j ? i - j : j - i;
+      touches = gap >= exclude && (x[i] - x[j]).squaredNorm() < wire2;
+    }
+    if (touches) return i + 1;
+  }
+  return 0;
+}
+
 // Paper: U_b_hat = U_b r^2 / (R E_w I), I = pi r^4 / 4 [-]; U_b [J], r, R [m], E_w [Pa].
 double bending_energy_hat(double U_b, double r, double R, double E_w) {
   const double I = std::numbers::pi * std::pow(r, 4) / 4;

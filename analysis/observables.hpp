@@ -2,6 +2,7 @@
 // Observables of a wire configuration (docs/design.md §5). Pure functions of the centerline: nodes
 // in order along the wire [m], any number n >= 0 (degenerate inputs give documented zeros).
 #include <cstddef>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -43,6 +44,17 @@ Order order_parameter(Centerline x);
 // straight stretch (the entry chord from the hole) weighs nothing and a tight loop much. Same
 // axis and degenerate cases as order_parameter (no turning: S = 0, D = 1).
 Order curvature_weighted_order(Centerline x);
+// The entry chord: the wire from the hole (the last node of the inside wire) back to its first
+// contact with the shell or with another part of the wire. Walking back from the last node,
+// node i is in contact when distance_to_shell(x_i) < r + slack (distance of the centreline point
+// to the shell's surface on the inside [m]) or when a node j at least `exclude` nodes away along
+// the wire is closer than 2 r + slack; nodes within hole_zone of the last node (the wire passing
+// through the hole lies on the shell) are not tested. Returns k, the number of nodes before the
+// chord: the wire without its entry chord is x.first(k), its order parameter the variant that
+// does not count the chord. k = 0 when nothing touches.
+std::size_t entry_chord_start(Centerline x, double r, double slack, std::size_t exclude,
+                              double hole_zone,
+                              const std::function<double(const Vec3&)>& distance_to_shell);
 // Paper: U_b_hat = U_b r^2 / (R E_w I).
 double bending_energy_hat(double U_b, double r, double R, double E_w);
 

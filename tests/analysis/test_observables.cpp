@@ -281,6 +281,46 @@ TEST(CurvatureWeightedOrder, ReversedChordCountsByItsTurning) {
   EXPECT_NEAR(order_parameter(x).S, (turning - 5 * chord) / L, 5e-3);
 }
 
+// The entry chord in a sphere of radius R = 20 r: a coil against the wall (two turns at the
+// equator, radius R - r) reached from the hole at the pole by a chord that turns against it.
+// The chord starts after the coil's last node; without it the paper's D of the coil is 0, with
+// it D > 0. A chord that touches the coil halfway (another part of the wire) ends there.
+TEST(EntryChord, CoilAgainstTheWallAndAChordFromThePole) {
+  const double r = 1, R = 20 * r;
+  const auto to_sphere = [R](const Vec3& p) { return R - p.norm(); };
+  std::vector<Vec3> x;
+  const int per_turn = 126;  // ~1 r spacing at radius 19 r
+  for (int j = 0; j <= 2 * per_turn; ++j) {
+    const double t = 2 * pi * j / per_turn;
+    x.emplace_back((R - r) * std::cos(t), (R - r) * std::sin(t), 0);
+  }
+  const std::size_t coil = x.size();
+  // From the coil's end (R - r, 0, 0) up to the hole (0, 0, R): an arc through the interior,
+  // bulging against the coil's sense (towards -y), 40 nodes.
+  const Vec3 a = x.back(), b(0, 0, R);
+  for (int k = 1; k <= 40; ++k) {
+    const double s = k / 40.0;
+    x.push_back((1 - s) * a + s * b + Vec3(0, -6 * r * std::sin(pi * s), 0));
+  }
+  // The chord leaves the wall and the coil's end gradually: its first nodes (up to 4 here)
+  // still touch, so D without the chord is at most a few nodes' share (0.016) instead of 0.
+  const std::size_t k = entry_chord_start(x, r, 0.1 * r, 4, 3 * r, to_sphere);
+  EXPECT_GE(k, coil);
+  EXPECT_LE(k, coil + 4);
+  EXPECT_LT(order_parameter(std::span(x).first(k)).D, 0.02);
+  EXPECT_GT(order_parameter(x).D, 0.1);
+  // Nothing touches: k = 0 (a straight wire from the centre up to the hole at the pole).
+  std::vector<Vec3> straight;
+  for (int j = 0; j <= 20; ++j) straight.emplace_back(0, 0, j * r);
+  EXPECT_EQ(entry_chord_start(straight, r, 0.1 * r, 4, 3 * r, to_sphere), 0u);
+  // A chord that starts 2 r inside the coil at t = pi and runs straight to the pole: its first
+  // node touches the coil, so the chord is what follows it.
+  std::vector<Vec3> y(x.begin(), x.begin() + coil);
+  const Vec3 c = y[per_turn / 2] + Vec3(2 * r, 0, 0);
+  for (int k2 = 0; k2 <= 26; ++k2) y.push_back(c + (k2 / 26.0) * (b - c));
+  EXPECT_EQ(entry_chord_start(y, r, 0.1 * r, 4, 3 * r, to_sphere), coil + 1);
+}
+
 TEST(Observables, EmptyOneAndTwoNodeInputsGiveDocumentedZeros) {
   const std::vector<Vec3> none;
   const std::vector<Vec3> one{Vec3(1, 2, 3)};
