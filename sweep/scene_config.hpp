@@ -40,6 +40,8 @@ struct NumericsPreset {
 const std::vector<NumericsPreset>& numerics_presets();
 // The preset called `name`, or nullptr.
 const NumericsPreset* find_numerics_preset(const std::string& name);
+// The presets' names, quoted and comma-separated, for messages.
+std::string preset_names();
 
 // One row of the schema table.
 struct KeySpec {
