@@ -10,6 +10,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/render.hpp"
 #include "report/accuracy.hpp"
 #include "report/analyze.hpp"
 #include "report/refine.hpp"
@@ -218,6 +219,14 @@ int cmd_accuracy(AccuracyOptions o, const std::string& window) {
   return kOk;
 }
 
+// Issue 18: a picture and/or a movie of a run file (ParaView, else gnuplot).
+int cmd_render(const wirepack::app::RenderOptions& o) {
+  const wirepack::app::RenderPlan plan = wirepack::app::check_render(o);
+  if (!o.out.empty()) check_output_path(o.out);
+  if (!o.movie.empty()) check_output_path(o.movie);
+  return wirepack::app::render_run(o, plan, std::cout, std::cerr);
+}
+
 int cmd_export(const std::string& run_file, const std::string& csv, const std::string& xmf) {
   try {
     if (!csv.empty()) export_csv(run_file, csv);
@@ -366,6 +375,33 @@ int main(int argc, char** argv) {
   outputs->add_option("--xdmf", xmf_path, "write an XDMF file referencing the run file");
   outputs->require_option(1, 2);
 
+  wirepack::app::RenderOptions render_opt;
+  auto* render = app.add_subcommand(
+      "render",
+      "draw a run file with ParaView (pvbatch, off-screen): the wire as a tube coloured by its "
+      "curvature kappa R, the shell translucent and coloured by a field; a picture of one "
+      "snapshot and/or a movie of all (falls back to gnuplot without ParaView; README "
+      "\"Pictures and movies\")");
+  render->add_option("run_file", render_opt.run_file, "run file (HDF5)")->required();
+  auto* render_outputs = render->add_option_group("outputs", "at least one of");
+  render_outputs->add_option("-o,--out", render_opt.out, "picture to write (PNG)");
+  render_outputs->add_option("--movie", render_opt.movie,
+                             "movie over all snapshots to write (MP4, H.264; needs ffmpeg)");
+  render_outputs->require_option(1, 2);
+  render->add_option("--snapshot", render_opt.snapshot,
+                     "snapshot of the picture, 0 to count - 1 (default: the last)");
+  render->add_flag("--half-radius", render_opt.half_radius,
+                   "draw the wire at half its radius, to show the inside (as the paper does)");
+  render
+      ->add_option("--shell-field", render_opt.shell_field,
+                   "colour of an elastic shell: area_stretch (default), contact_pressure, "
+                   "clamped or none")
+      ->check(CLI::IsMember({"area_stretch", "contact_pressure", "clamped", "none"}));
+  render->add_option("--size", render_opt.size, "picture size WxH in pixels (default 1200x900)");
+  render->add_option("--kappa-range", render_opt.kappa_range,
+                     "A,B: kappa R at the ends of the wire's colour map (default 0,3)");
+  render->add_option("--title", render_opt.title, "title (default: the run file's name)");
+
   auto* schema = app.add_subcommand("schema", "print the scene file keys as a Markdown table");
 
   try {
@@ -400,6 +436,7 @@ int main(int argc, char** argv) {
       return cmd_accuracy(accuracy_opt, accuracy_window);
     }
     if (*exp) return cmd_export(run_file, csv_path, xmf_path);
+    if (*render) return cmd_render(render_opt);
     if (*schema) {
       std::cout << schema_markdown();
       return kOk;

@@ -143,6 +143,7 @@ Assembly assemble(const SceneParams& p) {
     ws.node_mass = a.mass.point_mass();
     ws.vertex_mass = m_min;
     ws.friction = fp;
+    a.wire_shell_params = ws;
     auto contact = std::make_unique<WireShellTerm>(mesh, ws);
     a.wire_shell = contact.get();
     a.terms.push_back(std::move(contact));

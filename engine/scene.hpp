@@ -58,6 +58,7 @@ struct Assembly {
   std::vector<double> vertex_mass;      // lumped, scaled like the wire (nv) [kg]
   double shell_damping_rate = 0;        // gamma_s of the vertex damping [1/s]
   WireShellTerm* wire_shell = nullptr;  // owned by `terms`
+  WireShellParams wire_shell_params;    // its parameters (for read-only probes)
 };
 
 // Throws std::invalid_argument for scenes this engine cannot simulate.

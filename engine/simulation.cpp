@@ -6,6 +6,7 @@
 #include <cmath>
 #include <string>
 
+#include "engine/contact/wire_shell_probe.hpp"
 #include "engine/integrate/stability.hpp"
 #include "engine/rod/frames.hpp"
 #include "engine/scene.hpp"
@@ -298,6 +299,37 @@ std::span<const Vec3> Simulation::shell_vertices() const {
 std::span<const std::array<int, 3>> Simulation::shell_triangles() const {
   if (!impl_->assembly.mesh) return {};
   return impl_->assembly.mesh->faces;
+}
+
+std::span<const Vec3> Simulation::shell_rest_vertices() const {
+  if (!impl_->assembly.mesh) return {};
+  return impl_->assembly.mesh->rest;
+}
+std::span<const char> Simulation::shell_clamped() const {
+  if (!impl_->assembly.mesh) return {};
+  return impl_->assembly.mesh->clamped;
+}
+
+Vec3List Simulation::shell_contact_forces() const {
+  const Assembly& a = impl_->assembly;
+  if (!a.mesh || !a.wire_shell) return {};
+  ThreadScope scope(impl_->threads);
+  return wire_shell_vertex_forces(*a.mesh, a.wire_shell_params, impl_->state);
+}
+
+std::vector<int> Simulation::wire_contacts_per_node() const {
+  const int n = impl_->state.n_free;
+  std::vector<int> count(static_cast<size_t>(std::max(n, 0)), 0);
+  if (!impl_->assembly.self_contact || n == 0) return count;
+  const auto at = [&](int edge, double param) {
+    const int node = std::clamp(edge + (param > 0.5 ? 1 : 0), 0, n - 1);
+    ++count[static_cast<size_t>(node)];
+  };
+  for (const WireContact& c : impl_->assembly.self_contact->contact_list()) {
+    at(c.a, c.s);
+    at(c.b, c.t);
+  }
+  return count;
 }
 
 }  // namespace wirepack

@@ -59,6 +59,16 @@ class Simulation {
   // Shell mesh (empty for a rigid shell).
   std::span<const Vec3> shell_vertices() const;
   std::span<const std::array<int, 3>> shell_triangles() const;
+  // Rest positions of the shell's vertices (nv) [m] and its clamped rim (nv; 1 = held fixed).
+  std::span<const Vec3> shell_rest_vertices() const;
+  std::span<const char> shell_clamped() const;
+  // Normal contact force of the wire on each shell vertex at the current state (nv) [N]:
+  // Hertz plus dashpot, friction left out (engine/contact/wire_shell_probe.hpp). Read-only:
+  // evaluated apart from the simulation's own term. Empty for a rigid shell.
+  Vec3List shell_contact_forces() const;
+  // Wire self-contacts per inside node (n_free): each touching edge pair counted once on
+  // each of its two edges, at the edge's node nearer the contact point; sums to 2 N.
+  std::vector<int> wire_contacts_per_node() const;
 
  private:
   struct Impl;

@@ -46,6 +46,12 @@ std::string relative_run_path(const std::string& run_file, const std::string& xm
   return (rel.empty() ? run : rel).generic_string();
 }
 
+// XDMF number types of the run file's datasets.
+constexpr const char* kFloat64 = "NumberType=\"Float\" Precision=\"8\"";
+constexpr const char* kFloat32 = "NumberType=\"Float\" Precision=\"4\"";
+constexpr const char* kInt32 = "NumberType=\"Int\" Precision=\"4\"";
+constexpr const char* kUInt8 = "NumberType=\"UChar\" Precision=\"1\"";
+
 // Reads a run file to export; a `.part` (a run killed or still being written) is refused even
 // when it happens to be readable: only a renamed file is known to be whole.
 RunRecord read_for_export(const std::string& run_file) {
@@ -83,6 +89,18 @@ void export_csv(const std::string& run_file, const std::string& csv_path) {
 void export_xdmf(const std::string& run_file, const std::string& xmf_path) {
   const RunRecord r = read_for_export(run_file);
   const std::string h5 = xml_escape(relative_run_path(run_file, xmf_path));
+  // An attribute of `rows` values (times `cols` components) stored at <snap>/<name>, named
+  // after the dataset, on the grid's nodes or cells.
+  const auto attribute = [&](const std::string& name, const char* center, std::size_t rows,
+                             const char* number_type, const std::string& snap, int cols = 1) {
+    std::ostringstream a;
+    a << "          <Attribute Name=\"" << name << "\" AttributeType=\""
+      << (cols == 1 ? "Scalar" : "Vector") << "\" Center=\"" << center << "\">\n"
+      << "            <DataItem Dimensions=\"" << rows << (cols == 1 ? "" : " 3") << "\" "
+      << number_type << " Format=\"HDF\">" << h5 << ':' << snap << '/' << name << "</DataItem>\n"
+      << "          </Attribute>\n";
+    return a.str();
+  };
   std::ostringstream x;
   x << "<?xml version=\"1.0\" ?>\n"
     << "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
@@ -120,12 +138,8 @@ void export_xdmf(const std::string& run_file, const std::string& xmf_path) {
         << " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << h5 << ':' << snap
         << "/wire</DataItem>\n"
         << "          </Geometry>\n";
-      if (s.curvature.size() == n)
-        x << "          <Attribute Name=\"curvature\" AttributeType=\"Scalar\" Center=\"Node\">\n"
-          << "            <DataItem Dimensions=\"" << n
-          << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << h5 << ':' << snap
-          << "/curvature</DataItem>\n"
-          << "          </Attribute>\n";
+      if (s.curvature.size() == n) x << attribute("curvature", "Node", n, kFloat64, snap);
+      if (s.wire_contacts.size() == n) x << attribute("wire_contacts", "Node", n, kInt32, snap);
       x << "        </Grid>\n";
     }
     if (has_shell) {
@@ -139,8 +153,13 @@ void export_xdmf(const std::string& run_file, const std::string& xmf_path) {
         << "            <DataItem Dimensions=\"" << m
         << " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << h5 << ':' << snap
         << "/shell_vertices</DataItem>\n"
-        << "          </Geometry>\n"
-        << "        </Grid>\n";
+        << "          </Geometry>\n";
+      if (s.shell_area_stretch.size() == f)
+        x << attribute("shell_area_stretch", "Cell", f, kFloat32, snap);
+      if (s.shell_contact_force.size() == m)
+        x << attribute("shell_contact_force", "Node", m, kFloat64, snap, 3);
+      if (s.shell_clamped.size() == m) x << attribute("shell_clamped", "Node", m, kUInt8, snap);
+      x << "        </Grid>\n";
     }
     x << "      </Grid>\n";
   }

@@ -11,9 +11,11 @@ namespace wirepack::sweep {
 void export_csv(const std::string& run_file, const std::string& csv_path);
 
 // XDMF 3 temporal collection, one time step (Time = l) per snapshot: the wire as a Polyline
-// with node attribute `curvature` and, where the snapshot has one, the shell as a triangle
-// mesh. Heavy data stay in the run file, referenced by its path relative to the .xmf file; a
-// mesh shared by all snapshots (run file layout 2) is referenced once, at /shell_triangles.
+// with node attributes `curvature` and `wire_contacts` and, where the snapshot has one, the
+// shell as a triangle mesh with cell attribute `shell_area_stretch` and node attributes
+// `shell_contact_force` (vector) and `shell_clamped`; each field only where the run file has it.
+// Heavy data stay in the run file, referenced by its path relative to the .xmf file; a mesh shared
+// by all snapshots (run file layout 2) is referenced once, at /shell_triangles.
 void export_xdmf(const std::string& run_file, const std::string& xmf_path);
 
 }  // namespace wirepack::sweep

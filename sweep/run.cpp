@@ -10,6 +10,7 @@
 #include "analysis/observables.hpp"
 #include "engine/simulation.hpp"
 #include "sweep/format.hpp"
+#include "sweep/shell_fields.hpp"
 
 namespace wirepack::sweep {
 
@@ -100,6 +101,15 @@ class Recorder {
     s.curvature = analysis::curvatures(x);
     for (const auto& p : sim.shell_vertices()) s.shell_vertices.push_back({p.x(), p.y(), p.z()});
     for (const auto& t : sim.shell_triangles()) s.shell_triangles.push_back(t);
+    s.wire_contacts = sim.wire_contacts_per_node();
+    if (!s.shell_vertices.empty()) {
+      Points rest;
+      for (const auto& p : sim.shell_rest_vertices()) rest.push_back({p.x(), p.y(), p.z()});
+      s.shell_area_stretch = face_area_stretch(rest, s.shell_vertices, s.shell_triangles);
+      for (const auto& f : sim.shell_contact_forces())
+        s.shell_contact_force.push_back({f.x(), f.y(), f.z()});
+      for (char c : sim.shell_clamped()) s.shell_clamped.push_back(c ? 1 : 0);
+    }
     record_.snapshots.push_back(std::move(s));
     last_snapshot_l_ = sim.l();
   }

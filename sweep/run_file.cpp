@@ -75,6 +75,13 @@ bool uses_shared_triangles(const RunRecord& r, const Snapshot& s) {
   return shared && s.shell_triangles == *shared;
 }
 
+// The clamped rim, stored once as /shell_clamped: the first snapshot's non-empty flags.
+const std::vector<std::uint8_t>* shared_clamped(const RunRecord& r) {
+  for (const auto& s : r.snapshots)
+    if (!s.shell_clamped.empty()) return &s.shell_clamped;
+  return nullptr;
+}
+
 }  // namespace
 
 std::string shell_triangles_path(const RunRecord& r, std::size_t k) {
@@ -283,6 +290,12 @@ std::vector<char> build_image(const RunRecord& r, const std::string& file_name) 
       write_dataset(root.get(), "shell_triangles", H5T_STD_I32LE, H5T_NATIVE_INT,
                     {shared->size(), 3}, shared->data(), compress);
 
+    // So is the clamped rim (1 byte per vertex).
+    const auto* clamped = shared_clamped(r);
+    if (clamped)
+      write_dataset(root.get(), "shell_clamped", H5T_STD_U8LE, H5T_NATIVE_UINT8, {clamped->size()},
+                    clamped->data(), compress);
+
     Handle snaps = create_group(file.get(), "snapshots");
     for (std::size_t k = 0; k < r.snapshots.size(); ++k) {
       const Snapshot& s = r.snapshots[k];
@@ -297,6 +310,18 @@ std::vector<char> build_image(const RunRecord& r, const std::string& file_name) 
       write_double_attr(wire.get(), "l", s.l);
       write_dataset(g.get(), "curvature", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {s.curvature.size()},
                     s.curvature.data(), compress);
+      const auto check_size = [&](const char* name, std::size_t got, std::size_t want,
+                                  const char* of) {
+        if (got != want)
+          throw RunFileError("snapshot " + std::to_string(k) + ": " + name + " has " +
+                             std::to_string(got) + " values for " + std::to_string(want) + " " +
+                             of);
+      };
+      if (!s.wire_contacts.empty()) {
+        check_size("wire_contacts", s.wire_contacts.size(), s.wire.size(), "nodes");
+        write_dataset(g.get(), "wire_contacts", H5T_STD_I32LE, H5T_NATIVE_INT,
+                      {s.wire_contacts.size()}, s.wire_contacts.data(), compress);
+      }
       if (!s.shell_vertices.empty() || !s.shell_triangles.empty()) {
         write_dataset(g.get(), "shell_vertices", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE,
                       {s.shell_vertices.size(), 3}, s.shell_vertices.data(), compress);
@@ -308,6 +333,29 @@ std::vector<char> build_image(const RunRecord& r, const std::string& file_name) 
         else
           write_dataset(g.get(), "shell_triangles", H5T_STD_I32LE, H5T_NATIVE_INT,
                         {s.shell_triangles.size(), 3}, s.shell_triangles.data(), compress);
+        // Fields: the stretch in single precision (a picture's colour, not a state).
+        if (!s.shell_area_stretch.empty()) {
+          check_size("shell_area_stretch", s.shell_area_stretch.size(), s.shell_triangles.size(),
+                     "triangles");
+          write_dataset(g.get(), "shell_area_stretch", H5T_IEEE_F32LE, H5T_NATIVE_DOUBLE,
+                        {s.shell_area_stretch.size()}, s.shell_area_stretch.data(), compress);
+        }
+        if (!s.shell_contact_force.empty()) {
+          check_size("shell_contact_force", s.shell_contact_force.size(), s.shell_vertices.size(),
+                     "vertices");
+          write_dataset(g.get(), "shell_contact_force", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE,
+                        {s.shell_contact_force.size(), 3}, s.shell_contact_force.data(), compress);
+        }
+        if (!s.shell_clamped.empty()) {
+          check_size("shell_clamped", s.shell_clamped.size(), s.shell_vertices.size(), "vertices");
+          if (s.shell_clamped == *clamped)
+            check(H5Lcreate_hard(root.get(), "shell_clamped", g.get(), "shell_clamped", H5P_DEFAULT,
+                                 H5P_DEFAULT),
+                  "link shell_clamped into snapshot " + std::to_string(k));
+          else
+            write_dataset(g.get(), "shell_clamped", H5T_STD_U8LE, H5T_NATIVE_UINT8,
+                          {s.shell_clamped.size()}, s.shell_clamped.data(), compress);
+        }
       }
     }
   }
@@ -546,6 +594,19 @@ RunRecord read_record(const std::string& path) {
             read_dataset<std::array<int, 3>>(sg.get(), "shell_triangles", H5T_NATIVE_INT, 3);
       else if (has_shared && has_link(sg.get(), "shell_vertices"))
         s.shell_triangles = shared;
+      // Fields: optional.
+      if (has_link(sg.get(), "wire_contacts"))
+        s.wire_contacts = read_dataset<int>(sg.get(), "wire_contacts", H5T_NATIVE_INT, 0);
+      if (has_link(sg.get(), "shell_area_stretch"))
+        s.shell_area_stretch =
+            read_dataset<double>(sg.get(), "shell_area_stretch", H5T_NATIVE_DOUBLE, 0);
+      if (has_link(sg.get(), "shell_contact_force"))
+        s.shell_contact_force = read_dataset<std::array<double, 3>>(sg.get(), "shell_contact_force",
+                                                                    H5T_NATIVE_DOUBLE, 3);
+      // The rim: where the snapshot links it (every snapshot written with one does).
+      if (has_link(sg.get(), "shell_clamped"))
+        s.shell_clamped =
+            read_dataset<std::uint8_t>(sg.get(), "shell_clamped", H5T_NATIVE_UINT8, 0);
       r.snapshots.push_back(std::move(s));
     }
   }

@@ -5,9 +5,12 @@
 // attribute l. Layout 2: datasets of 32 KiB or more chunked and compressed (shuffle + deflate)
 // where the HDF5 library can, the shell's triangles stored once as /shell_triangles and
 // hard-linked into every snapshot whose mesh it is. Layout 1 (no attribute layout): a triangle
-// dataset in every snapshot; still read.
+// dataset in every snapshot; still read. Fields (issue 18), optional on read (files from before
+// them lack them): /snapshots/<k>/{wire_contacts, shell_area_stretch, shell_contact_force} and
+// the clamped rim, stored once as /shell_clamped and hard-linked like the triangles.
 // Written as PATH.part and renamed to PATH once fully written and closed.
 #include <array>
+#include <cstdint>
 #include <mutex>
 #include <stdexcept>
 #include <string>
@@ -33,6 +36,11 @@ struct Snapshot {
   std::vector<double> curvature;                      // kappa_i at the wire nodes (n) [1/m]
   std::vector<std::array<double, 3>> shell_vertices;  // (m x 3) [m]; empty for a rigid shell
   std::vector<std::array<int, 3>> shell_triangles;    // vertex indices (f x 3); empty if rigid
+  // Fields, each empty where not recorded (rigid shell, or a file from before them):
+  std::vector<int> wire_contacts;          // self-contacts per wire node (n) [-]
+  std::vector<double> shell_area_stretch;  // current / rest area per face (f) [-]; float32 in file
+  std::vector<std::array<double, 3>> shell_contact_force;  // wire's force per vertex (m x 3) [N]
+  std::vector<std::uint8_t> shell_clamped;                 // 1 on the clamped rim (m)
 };
 
 struct Series {

@@ -147,6 +147,52 @@ TEST(Export, XdmfPathsExistInFile) {
   EXPECT_EQ(check_hdf_items(dir / "old.xmf"), 12u);
 }
 
+// The fields (issue 18): node attributes of the wire and the shell, a cell attribute of the
+// shell, each referencing a dataset of the right shape and number type.
+TEST(Export, XdmfFieldAttributes) {
+  TempDir dir;
+  RunRecord r = record(true);
+  for (std::size_t k = 1; k < r.snapshots.size(); ++k) {  // none in snapshot 0 (an old file)
+    Snapshot& s = r.snapshots[k];
+    s.wire_contacts.assign(s.wire.size(), 1);
+    s.shell_area_stretch = {1.5};
+    s.shell_contact_force = {{0, 0, 1e-3}, {0, 0, 0}, {0, 0, 0}};
+    s.shell_clamped = {0, 1, 1};
+  }
+  write_run_file(r, dir / "run.h5");
+  export_xdmf(dir / "run.h5", dir / "run.xmf");
+  const std::string x = read_text(dir / "run.xmf");
+  EXPECT_EQ(count(x,
+                  "<Attribute Name=\"wire_contacts\" AttributeType=\"Scalar\" "
+                  "Center=\"Node\">"),
+            2u);
+  EXPECT_EQ(count(x,
+                  "<Attribute Name=\"shell_area_stretch\" AttributeType=\"Scalar\" "
+                  "Center=\"Cell\">"),
+            2u);
+  EXPECT_EQ(count(x,
+                  "<Attribute Name=\"shell_contact_force\" AttributeType=\"Vector\" "
+                  "Center=\"Node\">"),
+            2u);
+  EXPECT_EQ(count(x,
+                  "<Attribute Name=\"shell_clamped\" AttributeType=\"Scalar\" "
+                  "Center=\"Node\">"),
+            2u);
+  EXPECT_NE(x.find("<DataItem Dimensions=\"1\" NumberType=\"Float\" Precision=\"4\" "
+                   "Format=\"HDF\">run.h5:/snapshots/2/shell_area_stretch<"),
+            std::string::npos);
+  EXPECT_NE(x.find("<DataItem Dimensions=\"3\" NumberType=\"UChar\" Precision=\"1\" "
+                   "Format=\"HDF\">run.h5:/snapshots/1/shell_clamped<"),
+            std::string::npos);
+  EXPECT_NE(x.find("<DataItem Dimensions=\"3 3\" NumberType=\"Float\" Precision=\"8\" "
+                   "Format=\"HDF\">run.h5:/snapshots/1/shell_contact_force<"),
+            std::string::npos);
+  EXPECT_EQ(x.find("/snapshots/0/shell_clamped"), std::string::npos);
+  // Per snapshot: wire, curvature, shell triangles and vertices; 4 fields in snapshots 1, 2.
+  EXPECT_EQ(check_hdf_items(dir / "run.xmf"), 12u + 8u);
+  EXPECT_EQ(count(x, "<Attribute "), count(x, "</Attribute>"));
+}
+
 TEST(Export, MissingRunFileThrows) {
   TempDir dir;
   EXPECT_THROW(export_csv(dir / "none.h5", dir / "x.csv"), RunFileError);

@@ -226,6 +226,13 @@ void expect_same_data(const RunRecord& a, const RunRecord& b) {
     EXPECT_TRUE(same_bytes(y.curvature, x.curvature)) << k;
     EXPECT_TRUE(same_bytes(y.shell_vertices, x.shell_vertices)) << k;
     EXPECT_EQ(y.shell_triangles, x.shell_triangles) << k;
+    EXPECT_EQ(y.wire_contacts, x.wire_contacts) << k;
+    EXPECT_TRUE(same_bytes(y.shell_contact_force, x.shell_contact_force)) << k;
+    EXPECT_EQ(y.shell_clamped, x.shell_clamped) << k;
+    // The stretch is stored in single precision.
+    ASSERT_EQ(y.shell_area_stretch.size(), x.shell_area_stretch.size()) << k;
+    for (std::size_t i = 0; i < x.shell_area_stretch.size(); ++i)
+      EXPECT_EQ(y.shell_area_stretch[i], double(float(x.shell_area_stretch[i]))) << k;
   }
 }
 
@@ -336,7 +343,13 @@ TEST(RunFile, ReadsLayout1Files) {
   EXPECT_EQ(b.config, r.config);
   EXPECT_EQ(b.status, r.status);
   EXPECT_EQ(b.git, r.git);
-  expect_same_data(r, b);
+  expect_same_data(r, b);  // incl. the fields (issue 18): optional, empty here
+  for (const Snapshot& s : b.snapshots) {
+    EXPECT_TRUE(s.wire_contacts.empty());
+    EXPECT_TRUE(s.shell_area_stretch.empty());
+    EXPECT_TRUE(s.shell_contact_force.empty());
+    EXPECT_TRUE(s.shell_clamped.empty());
+  }
   for (std::size_t k = 0; k < b.snapshots.size(); ++k)
     EXPECT_EQ(shell_triangles_path(b, k), "/snapshots/" + std::to_string(k) + "/shell_triangles");
   // Rewritten, it comes out in layout 2 with the same data.
@@ -345,6 +358,58 @@ TEST(RunFile, ReadsLayout1Files) {
   const RunRecord c = read_run_file(dir / "run.h5");
   EXPECT_EQ(c.layout, 2);
   expect_same_data(r, c);
+}
+
+// A record with the shell fields (issue 18) in snapshots 1 and 2, none in snapshot 0.
+RunRecord fields_record() {
+  RunRecord r = layout1_record();
+  for (std::size_t k = 1; k < r.snapshots.size(); ++k) {
+    Snapshot& s = r.snapshots[k];
+    s.wire_contacts = {0, 2, int(k)};
+    s.shell_area_stretch = {1.0 + 0.1 * double(k), 1.0 / 3.0};
+    s.shell_contact_force = {{0, 0, 0}, {1e-3, -2e-3, 0.5 * double(k)}, {0, 0, 0}, {0, 0, 1e-9}};
+    s.shell_clamped = {0, 0, 1, 1};
+  }
+  return r;
+}
+
+TEST(RunFile, FieldsRoundTripAndRimStoredOnce) {
+  TempDir dir;
+  const std::string path = dir / "run.h5";
+  const RunRecord r = fields_record();
+  write_run_file(r, path);
+  const RunRecord b = read_run_file(path);
+  expect_same_data(r, b);
+  EXPECT_TRUE(b.snapshots[0].wire_contacts.empty());
+  EXPECT_TRUE(b.snapshots[0].shell_area_stretch.empty());
+  EXPECT_TRUE(b.snapshots[0].shell_contact_force.empty());
+  EXPECT_NEAR(b.snapshots[1].shell_area_stretch[1], 1.0 / 3.0, 1e-7);
+  {
+    H5Id file{H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose};
+    ASSERT_GE(file.id, 0);
+    // One rim dataset, linked from the root and from snapshots 1 and 2 (0 has no rim).
+    EXPECT_EQ(link_count(file.id, "/shell_clamped"), 3u);
+    EXPECT_EQ(H5Lexists(file.id, "/snapshots/0/shell_clamped", H5P_DEFAULT), 0);
+    EXPECT_EQ(H5Lexists(file.id, "/snapshots/0/wire_contacts", H5P_DEFAULT), 0);
+  }
+  // Rewritten from what was read: the same file contents.
+  write_run_file(b, dir / "again.h5");
+  expect_same_data(b, read_run_file(dir / "again.h5"));
+}
+
+TEST(RunFile, FieldOfTheWrongSizeIsRefused) {
+  TempDir dir;
+  for (int which = 0; which < 4; ++which) {
+    RunRecord r = fields_record();
+    Snapshot& s = r.snapshots[2];
+    if (which == 0) s.wire_contacts.push_back(1);
+    if (which == 1) s.shell_area_stretch.pop_back();
+    if (which == 2) s.shell_contact_force.pop_back();
+    if (which == 3) s.shell_clamped.push_back(0);
+    EXPECT_THROW(write_run_file(r, dir / "bad.h5"), RunFileError) << which;
+    EXPECT_FALSE(fs::exists(dir / "bad.h5")) << which;
+    EXPECT_FALSE(fs::exists(dir / "bad.h5.part")) << which;
+  }
 }
 
 TEST(RunFile, RejectsUnknownLayout) {

@@ -1,0 +1,14 @@
+#include "engine/contact/wire_shell_probe.hpp"
+
+namespace wirepack {
+
+Vec3List wire_shell_vertex_forces(const ShellMesh& mesh, WireShellParams p, const RodState& s) {
+  p.friction = FrictionParams{};  // normal force only: a fresh history has no tangential part
+  WireShellTerm term(mesh, p);
+  RodForces f;
+  f.reset(s);
+  term.accumulate(s, f);
+  return f.shell_f;
+}
+
+}  // namespace wirepack

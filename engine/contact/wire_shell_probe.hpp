@@ -1,0 +1,17 @@
+#pragma once
+// Read-only probe of the wire-shell contact (for output, never for the dynamics): the normal
+// contact force that the wire exerts on each shell vertex at a given state. Evaluated by a
+// fresh WireShellTerm without friction, so the simulation's own term (its Verlet list, its
+// friction history) is untouched and the trajectory stays bitwise the same.
+#include "engine/contact/wire_shell.hpp"
+#include "engine/rod/rod_state.hpp"
+#include "engine/shell/shell_term.hpp"
+
+namespace wirepack {
+
+// Force of the wire on every shell vertex (nv) [N]: Hertz plus the normal dashpot at the
+// state's velocities, spread by barycentric weights (the term's own force, friction left out).
+// The wire takes the opposite total (action = reaction). Needs s.shell_x of the mesh's size.
+Vec3List wire_shell_vertex_forces(const ShellMesh& mesh, WireShellParams p, const RodState& s);
+
+}  // namespace wirepack
