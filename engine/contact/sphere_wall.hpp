@@ -31,6 +31,13 @@ class SphereWallTerm : public Term {
   double energy(const RodState& s) override;
   double omega_max_sq(const RodInertia& inertia) const override;
   int contacts() const { return contacts_; }  // nodes touching the wall at the last accumulate
+  // Largest overlap delta of a node with the wall or the hole's rim at the last accumulate
+  // (0 when none touches) [m].
+  double max_overlap() const {
+    double worst = 0.0;
+    for (const Touch& t : touching_) worst = t.delta > worst ? t.delta : worst;
+    return worst;
+  }
   void begin_trial(double dt) override {
     if (friction_) friction_->begin_trial(dt);
   }
