@@ -22,7 +22,7 @@ struct Energies {
 // Largest contact overlaps of the last evaluation [m] (0 where the scene has no such contact).
 struct ContactOverlaps {
   double wire_wire = 0;   // 2 r - d of two wire capsules
-  double wall = 0;        // |x| + r - R of a node with the rigid sphere (or its hole's rim)
+  double wall = 0;        // |x| + r - R of a node with the rigid sphere (not its hole's rim)
   double wire_shell = 0;  // r + t/2 - d of a wire capsule with the elastic shell's slab
 };
 
