@@ -32,6 +32,8 @@ struct Simulation::Impl {
   std::vector<char> inside;               // per released node, of the last inside test
   long next_inside_check = 0;             // step of the next inside test
   int threads = 1;                        // threads of the force loops (set_threads)
+  double feeder_work = 0.0;               // energy put in by the feeder (feeder_work()) [J]
+  double feeder_power = 0.0;              // its power at the last accepted state [W]
 
   explicit Impl(const SceneParams& p)
       : params(p),
@@ -54,6 +56,34 @@ struct Simulation::Impl {
     PredictorCorrector fresh(c, p.wire.radius);
     integrator = fresh;
     integrator.initialise(state, eval_fn(), moved_fn());
+    feeder_power = guide_power();
+  }
+
+  // Power the feeder puts into the wire at the last evaluation [W]: the guide moves at its
+  // fixed velocity, so the feeder supplies -f on each guide node (f: the forces of the terms
+  // and the damping there).
+  double guide_power() const {
+    double P = 0.0;
+    for (int i = state.n_free; i < state.num_nodes(); ++i) P -= forces.f[i].dot(state.v[i]);
+    return P;
+  }
+
+  // Kinetic energy of the wire (its first n_free nodes and their edges' twist) and the shell at
+  // the current velocities [J].
+  double kinetic_energy(int n_free) const {
+    const RodState& s = state;
+    double E = assembly.mass.kinetic_energy(s.v, n_free);
+    if (s.has_twist()) E += assembly.twist_mass.kinetic_energy(s.omega, std::max(0, n_free - 1));
+    const auto& vm = assembly.vertex_mass;
+    for (size_t k = 0; k < s.shell_v.size(); ++k) E += 0.5 * vm[k] * s.shell_v[k].squaredNorm();
+    return E;
+  }
+
+  // Every term's energy at the last evaluation plus the kinetic energy of n_free nodes [J].
+  double total_energy(int n_free) const {
+    double U = kinetic_energy(n_free);
+    for (double e : term_energy) U += e;
+    return U;
   }
 
   // Generalised accelerations of the dynamic DOFs; returns omega_max^2 [1/s^2].
@@ -168,9 +198,20 @@ struct Simulation::Impl {
     ++steps;
     check_state();
     check_shell();
+    // Feeder work over the step, trapezoid between the powers at its two ends.
+    const double P = guide_power();
+    feeder_work += 0.5 * dt * (feeder_power + P);
+    feeder_power = P;
+    const int n_before = state.n_free;
     if (feeder.release(state) > 0) {
+      // What the released nodes brought in: the total energy at the new layout minus that of
+      // the last evaluation (term energies not yet updated, the kinetic energy of the nodes
+      // that were free; release() keeps every velocity).
+      const double E_before = total_energy(n_before);
       integrator.initialise(state, eval_fn(), moved_fn());
       commit();
+      feeder_work += total_energy(state.n_free) - E_before;
+      feeder_power = guide_power();
     }
   }
 
@@ -268,14 +309,21 @@ Energies Simulation::energies() const {
   e.U_sb = of(TermType::kShellBending);
   e.U_contact = of(TermType::kWall) + of(TermType::kSelfContact) + of(TermType::kWireShell) +
                 of(TermType::kShellSelf);
-  const RodState& s = impl_->state;
-  e.E_kin = impl_->assembly.mass.kinetic_energy(s.v, s.n_free);
-  if (s.has_twist()) {
-    e.E_kin += impl_->assembly.twist_mass.kinetic_energy(s.omega, std::max(0, s.n_free - 1));
-  }
-  const auto& vm = impl_->assembly.vertex_mass;
-  for (size_t k = 0; k < s.shell_v.size(); ++k) e.E_kin += 0.5 * vm[k] * s.shell_v[k].squaredNorm();
+  e.E_kin = impl_->kinetic_energy(impl_->state.n_free);
   return e;
+}
+
+double Simulation::feeder_work() const {
+  return impl_->feeder_work;
+}
+
+ContactOverlaps Simulation::max_overlaps() const {
+  const Assembly& a = impl_->assembly;
+  ContactOverlaps o;
+  if (a.self_contact) o.wire_wire = a.self_contact->max_overlap();
+  if (a.wall) o.wall = a.wall->max_overlap();
+  if (a.wire_shell) o.wire_shell = a.wire_shell->max_overlap();
+  return o;
 }
 
 int Simulation::wire_contacts() const {

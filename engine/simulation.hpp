@@ -19,6 +19,13 @@ struct Energies {
   double E_kin = 0;                  // kinetic energy, v^T M v / 2 with the simulated masses [J]
 };
 
+// Largest contact overlaps of the last evaluation [m] (0 where the scene has no such contact).
+struct ContactOverlaps {
+  double wire_wire = 0;   // 2 r - d of two wire capsules
+  double wall = 0;        // |x| + r - R of a node with the rigid sphere (not its hole's rim)
+  double wire_shell = 0;  // r + t/2 - d of a wire capsule with the elastic shell's slab
+};
+
 class Simulation {
  public:
   explicit Simulation(const SceneParams& params);
@@ -53,6 +60,13 @@ class Simulation {
   // Every simulated node, including the kinematic guide outside the hole [m].
   std::span<const Vec3> all_nodes() const;
   Energies energies() const;  // at the last evaluated state
+  // Energy put in by the feeder since the start [J]: the force that holds the guide at the feed
+  // speed times that speed, integrated over the accepted steps (trapezoid), plus the jump of
+  // the total energy at each node release (the released node's kinetic energy at the feed
+  // speed and its imperfection). Damping and friction only take energy out, so the total
+  // energy (Energies, all terms) minus its initial value stays below this.
+  double feeder_work() const;
+  ContactOverlaps max_overlaps() const;
   int wire_contacts() const;  // N: wire element pairs in contact
   // Names of the terms assembled for this scene, e.g. {"stretch", "bend", "wall", ...}.
   std::vector<std::string> term_names() const;

@@ -60,6 +60,12 @@ class SelfContactTerm : public Term {
   // N of docs/design.md §5.2: touching edge pairs.
   int contacts() const { return static_cast<int>(contacts_.size()); }
   const std::vector<WireContact>& contact_list() const { return contacts_; }
+  // Largest overlap 2 r - d of a touching pair at the last accumulate (0 when none) [m].
+  double max_overlap() const {
+    double worst = 0.0;
+    for (const WireContact& c : contacts_) worst = c.delta > worst ? c.delta : worst;
+    return worst;
+  }
   void begin_trial(double dt) override {
     if (friction_) friction_->begin_trial(dt);
   }

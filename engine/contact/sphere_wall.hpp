@@ -32,6 +32,14 @@ class SphereWallTerm : public Term {
   double energy(const RodState& s) override;
   double omega_max_sq(const RodInertia& inertia) const override;
   int contacts() const { return contacts_; }  // nodes touching the wall at the last accumulate
+  // Largest overlap delta of a node with the wall at the last accumulate (0 when none
+  // touches) [m]. The hole's rim is left out: there the feeder pushes the wire in by design.
+  double max_overlap() const {
+    double worst = 0.0;
+    for (const Touch& t : touching_)
+      if (!t.rim) worst = t.delta > worst ? t.delta : worst;
+    return worst;
+  }
   void begin_trial(double dt) override {
     if (friction_) friction_->begin_trial(dt);
   }

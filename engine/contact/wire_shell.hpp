@@ -64,6 +64,9 @@ class WireShellTerm : public Term {
   // (wire edge, face) pairs whose pieces overlap at the last accumulate.
   int contacts() const { return static_cast<int>(face_pairs_.size()); }
   long rebuilds() const { return rebuilds_; }
+  // Largest overlap of a (wire edge, face, shell edge or vertex) piece at the last accumulate
+  // (0 when none) [m].
+  double max_overlap() const { return max_overlap_; }
 
  private:
   // One (wire edge, face) pair in contact: closest points, normal (from shell to wire), overlap
