@@ -31,6 +31,10 @@ struct SceneConstants {
   // so a wider skin than the wire's trades a few more candidates for 4x fewer rebuilds.
   static constexpr double kShellSelfSkin = 2.0;
   static constexpr double kDtFloorFraction = 1e-6;  // step collapse below this x initial stable dt
+  // In the rigid sphere, a released node this far below the hole's rim plane / r has been
+  // pushed back out: a jam. Released nodes stay on or above the plane in normal rigid runs
+  // (rho = 5 to l = 40: never below); the jam the hard-scene suite found put one 0.42 r below.
+  static constexpr double kJamDepth = 0.25;
   static constexpr double kShellPoisson = 1.0 / 3.0;  // nu_s (paper)
   // Damping ratio of the wire's element-scale zig-zag, over damping_ratio (selective mass; the
   // bending-rate dashpot of integrate/damping.hpp). 1/10: enough to keep the element-scale

@@ -156,6 +156,17 @@ struct Simulation::Impl {
       if (assembly.wall && x.squaredNorm() > beyond2 && x[2] > feeder.z_hole()) {
         throw SimulationError("wire node " + std::to_string(i) + " tunnelled through the wall");
       }
+      // Rigid sphere: a released node back below the rim's plane has left the cavity: the
+      // packing has pushed the wire out through the hole beside the guide, which the feeder
+      // cannot undo (a jam; found by the hard-scene suite at rho = 10, l = 98.8, where the node
+      // then sat inside the wall). Not for the elastic shell, which may bulge out below the
+      // plane with the wire inside it (tip 0.27 r below it at rho = 10, eps = 1e3, l = 5.5).
+      const double below = feeder.z_hole() - x[2];
+      if (assembly.wall && below > SceneConstants::kJamDepth * r) {
+        throw SimulationError("the packing jams the feed: wire node " + std::to_string(i) +
+                              " was pushed back out through the hole (" +
+                              std::to_string(below / r) + " r below the rim's plane)");
+      }
     }
   }
 
