@@ -10,6 +10,7 @@
 #include "engine/contact/wire_shell.hpp"
 #include "engine/fd_harness.hpp"
 #include "engine/shell/mesh_builders.hpp"
+#include "engine/shell/shell_fixtures.hpp"
 
 namespace wirepack {
 namespace {
@@ -34,17 +35,7 @@ double hertz_energy(double delta) {
   return h.energy(delta);
 }
 
-// A rod of n nodes from a to b (all dynamic) over a shell mesh.
-RodState wire_over(const ShellMesh& mesh, const Vec3& a, const Vec3& b, int n) {
-  RodState s;
-  for (int i = 0; i < n; ++i) s.x.push_back(a + (b - a) * (double(i) / (n - 1)));
-  s.v.assign(n, Vec3::Zero());
-  for (int j = 0; j + 1 < n; ++j) s.rest_length.push_back((s.x[j + 1] - s.x[j]).norm());
-  s.n_free = n;
-  s.shell_x = mesh.rest;
-  s.shell_v.assign(mesh.rest.size(), Vec3::Zero());
-  return s;
-}
+using testing::wire_over;
 
 // A flat square of side 12 r (6 x 6 squares) with vertex heights jittered by 0.1 r.
 ShellMesh bumpy_square(std::mt19937_64& rng) {

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "engine/shell/mesh_builders.hpp"
+#include "engine/shell/shell_fixtures.hpp"
 
 namespace wirepack {
 namespace {
@@ -31,17 +32,7 @@ WireShellParams params() {
   return p;
 }
 
-// A straight wire of n nodes from a to b (all dynamic, at rest) over a mesh at rest.
-RodState wire_over(const ShellMesh& mesh, const Vec3& a, const Vec3& b, int n) {
-  RodState s;
-  for (int i = 0; i < n; ++i) s.x.push_back(a + (b - a) * (double(i) / (n - 1)));
-  s.v.assign(n, Vec3::Zero());
-  for (int j = 0; j + 1 < n; ++j) s.rest_length.push_back((s.x[j + 1] - s.x[j]).norm());
-  s.n_free = n;
-  s.shell_x = mesh.rest;
-  s.shell_v.assign(mesh.rest.size(), Vec3::Zero());
-  return s;
-}
+using testing::wire_over;
 
 Vec3 sum(const Vec3List& f) {
   Vec3 t = Vec3::Zero();

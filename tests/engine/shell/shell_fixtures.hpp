@@ -1,7 +1,9 @@
 #pragma once
-// Shared by the shell tests: the paper's shell material and randomly perturbed states.
+// Shared by the shell and wire-shell tests: the paper's shell material, randomly perturbed
+// states, a straight wire over a mesh.
 #include <random>
 
+#include "engine/rod/rod_state.hpp"
 #include "engine/shell/shell_term.hpp"
 
 namespace wirepack::testing {
@@ -22,6 +24,18 @@ inline Vec3List perturbed(const Vec3List& x, double amplitude, unsigned seed) {
   Vec3List y = x;
   for (Vec3& p : y) p += amplitude * Vec3(u(rng), u(rng), u(rng));
   return y;
+}
+
+// A straight wire of n nodes from a to b (all dynamic, at rest) over a shell mesh at rest.
+inline RodState wire_over(const ShellMesh& mesh, const Vec3& a, const Vec3& b, int n) {
+  RodState s;
+  for (int i = 0; i < n; ++i) s.x.push_back(a + (b - a) * (double(i) / (n - 1)));
+  s.v.assign(n, Vec3::Zero());
+  for (int j = 0; j + 1 < n; ++j) s.rest_length.push_back((s.x[j + 1] - s.x[j]).norm());
+  s.n_free = n;
+  s.shell_x = mesh.rest;
+  s.shell_v.assign(mesh.rest.size(), Vec3::Zero());
+  return s;
 }
 
 }  // namespace wirepack::testing
