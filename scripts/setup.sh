@@ -20,7 +20,7 @@ done
 
 packages=(build-essential cmake git pkg-config libeigen3-dev libhdf5-dev nlohmann-json3-dev
           libomp-dev libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev gnuplot-nox hdf5-tools
-          clang-format)
+          clang-format time)
 scripts/install_packages.sh "${packages[@]}"
 if [ "$with_paraview" = 1 ]; then scripts/install_paraview.sh; fi
 

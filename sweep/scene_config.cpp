@@ -12,7 +12,6 @@ namespace wirepack::sweep {
 using json = nlohmann::json;
 using Type = KeySpec::Type;
 using Need = KeySpec::Need;
-using Bound = KeySpec::Bound;
 
 namespace {
 

@@ -46,6 +46,8 @@ struct HardScene {
   // CPU rather than wall time: on the shared machine a run gets 10-90 % of a core, and the
   // work a scene needs should not decide its outcome.
   double budget_s = 120.0;
+  // Where set, the run must end failed with this reason (the engine's check at work).
+  std::string expect_failure = {};
 };
 // gtest names the parameter by the scene (not its bytes).
 void PrintTo(const HardScene& s, std::ostream* os) {
@@ -260,9 +262,12 @@ std::vector<HardScene> hard_scenes() {
   // The densest long runs, rho = 10, at the fast preset: the rigid one to l = 100 (at the
   // default numerics it needs ~145 s of CPU: it reached l = 90.6 in the 120 s budget), the
   // elastic one (the paper's xi = 10, eps = 1e3) to l = 100 (fast preset).
-  s.push_back(
-      {"dense_long_rigid",
-       {{"rho", 10}, {"shell", "rigid"}, {"mu_s", 0}, {"l_max", 100}, {"numerics", "fast"}}});
+  // The rigid one jams (the packing pushes the wire back out through the hole, l = 84.6; the
+  // engine's jam check, which this scene found missing, must end it).
+  s.push_back({"dense_long_rigid",
+               {{"rho", 10}, {"shell", "rigid"}, {"mu_s", 0}, {"l_max", 100}, {"numerics", "fast"}},
+               120.0,
+               "the packing jams the feed"});
   s.push_back({"dense_long_elastic", [] {
                  json j = elastic(10, 10, 1000, 0, 100);
                  j["numerics"] = "fast";
@@ -300,6 +305,10 @@ TEST_P(HardScenes, EndsWithTheInvariantsHeld) {
     EXPECT_FALSE(o.failure.empty()) << "a run that stops must say why";
     EXPECT_TRUE(cannot_continue(o)) << "failed: " << o.failure;
     EXPECT_LE(o.cpu_s, hs.budget_s + 10.0) << "the budget check must end the run";
+  }
+  if (!hs.expect_failure.empty()) {
+    EXPECT_FALSE(o.complete);
+    EXPECT_NE(o.failure.find(hs.expect_failure), std::string::npos) << o.failure;
   }
   EXPECT_LT(o.overlap.wire_wire, kMaxOverlap * r);
   EXPECT_LT(o.wall_past_entrance, kMaxOverlap * r);
