@@ -155,17 +155,24 @@ Order order_parameter(Centerline x) {
   return o;
 }
 
+std::vector<double> signed_turning(Centerline x, const Vec3& n) {
+  std::vector<double> turn(x.size(), 0.0);
+  Vec3 t0, t1;
+  for (std::size_t i = 1; i + 1 < x.size(); ++i) {
+    if (!edge_tangent(x, i - 1, t0) || !edge_tangent(x, i, t1)) continue;
+    const double c = t0.dot(t1);
+    if (!(c > -1)) continue;                      // a complete fold-back: curvature undefined
+    turn[i] = 2 * n.dot(t0.cross(t1)) / (1 + c);  // kappa_n,i ell_i [-]
+  }
+  return turn;
+}
+
 Order curvature_weighted_order(Centerline x) {
   Order o;
   if (x.size() < 3) return o;
   o.n = coil_normal(x);
   double signed_sum = 0, abs_sum = 0;
-  Vec3 t0, t1;
-  for (std::size_t i = 1; i + 1 < x.size(); ++i) {
-    if (!edge_tangent(x, i - 1, t0) || !edge_tangent(x, i, t1)) continue;
-    const double c = t0.dot(t1);
-    if (!(c > -1)) continue;  // a complete fold-back: curvature undefined
-    const double turn = 2 * o.n.dot(t0.cross(t1)) / (1 + c);  // kappa_n,i ell_i [-]
+  for (const double turn : signed_turning(x, o.n)) {
     signed_sum += turn;
     abs_sum += std::abs(turn);
   }

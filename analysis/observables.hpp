@@ -44,6 +44,10 @@ Order order_parameter(Centerline x);
 // straight stretch (the entry chord from the hole) weighs nothing and a tight loop much. Same
 // axis and degenerate cases as order_parameter (no turning: S = 0, D = 1).
 Order curvature_weighted_order(Centerline x);
+// The signed turning kappa_n,i ell_i = n . 2 (t_{i-1} x t_i) / (1 + t_{i-1} . t_i) of every node
+// about the axis n (unit) (n values; 0 at the two ends, at a zero-length edge and at a complete
+// fold-back) [-]: positive where the wire turns counter-clockwise about n.
+std::vector<double> signed_turning(Centerline x, const Vec3& n);
 // The entry chord: the wire from the hole (the last node of the inside wire) back to its first
 // contact with the shell or with another part of the wire. Walking back from the last node,
 // node i is in contact when distance_to_shell(x_i) < r + slack (distance of the centreline point

@@ -24,6 +24,7 @@
 #include "sweep/scene_config.hpp"
 #include "sweep/sweep_config.hpp"
 #include "sweep/sweep_runner.hpp"
+#include "sweep/wire_profile.hpp"
 
 namespace {
 
@@ -227,10 +228,16 @@ int cmd_render(const wirepack::app::RenderOptions& o) {
   return wirepack::app::render_run(o, plan, std::cout, std::cerr);
 }
 
-int cmd_export(const std::string& run_file, const std::string& csv, const std::string& xmf) {
+int cmd_export(const std::string& run_file, const std::string& csv, const std::string& xmf,
+               const std::string& profile, long snapshot) {
   try {
     if (!csv.empty()) export_csv(run_file, csv);
     if (!xmf.empty()) export_xdmf(run_file, xmf);
+    if (!profile.empty()) {
+      // Default: the last snapshot (counted from the end when negative).
+      if (snapshot < 0) snapshot += static_cast<long>(read_run_file(run_file).snapshots.size());
+      export_profile(run_file, snapshot, profile);
+    }
   } catch (const RunFileError& e) {
     throw InputError(e.what());
   } catch (const WriteError& e) {
@@ -365,7 +372,8 @@ int main(int argc, char** argv) {
       "check a scene or sweep file and print it resolved (all defaults; a sweep with its runs)");
   validate->add_option("file", validate_path, "scene or sweep file (JSON)")->required();
 
-  std::string run_file, csv_path, xmf_path;
+  std::string run_file, csv_path, xmf_path, profile_path;
+  long profile_snapshot = -1;
   auto* exp = app.add_subcommand("export",
                                  "convert a run file: series to CSV, snapshots to "
                                  "an XDMF sidecar for ParaView");
@@ -373,7 +381,13 @@ int main(int argc, char** argv) {
   auto* outputs = exp->add_option_group("outputs", "at least one of");
   outputs->add_option("--csv", csv_path, "write the series as CSV");
   outputs->add_option("--xdmf", xmf_path, "write an XDMF file referencing the run file");
-  outputs->require_option(1, 2);
+  outputs->add_option("--profile", profile_path,
+                      "write one snapshot's wire, node by node from the hole, as CSV: curvature, "
+                      "signed curvature about the coil normal, gap to the shell, entry chord");
+  outputs->require_option(1, 3);
+  exp->add_option("--snapshot", profile_snapshot,
+                  "snapshot of --profile, from 0; negative counts from the end (default -1, the "
+                  "last)");
 
   wirepack::app::RenderOptions render_opt;
   auto* render = app.add_subcommand(
@@ -435,7 +449,7 @@ int main(int argc, char** argv) {
       if (accuracy_no_plots) accuracy_opt.gnuplot.clear();
       return cmd_accuracy(accuracy_opt, accuracy_window);
     }
-    if (*exp) return cmd_export(run_file, csv_path, xmf_path);
+    if (*exp) return cmd_export(run_file, csv_path, xmf_path, profile_path, profile_snapshot);
     if (*render) return cmd_render(render_opt);
     if (*schema) {
       std::cout << schema_markdown();

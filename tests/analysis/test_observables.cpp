@@ -229,6 +229,23 @@ TEST(OrderParameter, InvariantUnderRigidMotion) {
 
 // The curvature-weighted order parameter: +-1 on a circle, ~0 on the figure-eight, and an
 // entry chord that is straight weighs nothing in it (the paper's S counts its length).
+TEST(SignedTurning, CircleTurnsByTwoTanHalfTheAngleAtEveryNode) {
+  // A regular polygon of n sides turns by phi = 2 pi / n at each vertex: kappa_n ell =
+  // 2 sin(phi) / (1 + cos(phi)) = 2 tan(phi / 2), signed by the sense about +z; ends carry 0.
+  const int n = 40;
+  for (double sense : {1.0, -1.0}) {
+    const auto x = circle(1.3, n, sense);
+    const auto turn = signed_turning(x, Vec3::UnitZ());
+    ASSERT_EQ(turn.size(), x.size());
+    EXPECT_EQ(turn.front(), 0.0);
+    EXPECT_EQ(turn.back(), 0.0);
+    for (std::size_t i = 1; i + 1 < x.size(); ++i)
+      EXPECT_NEAR(turn[i], sense * 2 * std::tan(pi / n), 1e-12);
+    // About an axis in the circle's plane nothing turns.
+    for (double t : signed_turning(x, Vec3::UnitX())) EXPECT_NEAR(t, 0.0, 1e-12);
+  }
+}
+
 TEST(CurvatureWeightedOrder, CircleFigureEightAndStraightEntryChord) {
   for (double sense : {1.0, -1.0}) {
     const Order o = curvature_weighted_order(circle(0.8, 120, sense));
