@@ -1,0 +1,82 @@
+#!/usr/bin/env bash
+# The paper reproduction campaign (results/paper/README.md). From anywhere, after scripts/setup.sh:
+#   bash results/paper/make.sh status              runs done and left per figure; runs nothing
+#   bash results/paper/make.sh run FIG [THREADS]   runs or resumes FIG's sweep (fig5b, fig5a, fig4,
+#                                                  fig1_3), seeds in stages: every point gets seeds
+#                                                  1-2 first, then 3-5, then the rest, so that an
+#                                                  interrupted campaign still has whole curves
+#   bash results/paper/make.sh analyze [FIG...]    tables and plots from FIG/sweep into FIG/analysis
+# The run data (FIG/sweep: manifest.json, joblog.csv, runs/*.h5) are committed: whoever picks the
+# campaign up resumes it. A run is the unit of work: a killed run starts again from l = 0.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/../.." && pwd)
+here=$root/results/paper
+wp=$root/build/wirepack
+figs=(fig5b fig5a fig4 fig1_3)
+
+expected_files() {  # FIG -> the run files its sweep file asks for, one per line
+  "$wp" validate "$here/$1/$1.sweep.json" | grep -o '"file": "[^"]*"' | cut -d'"' -f4
+}
+
+status() {
+  local total_done=0 total=0
+  printf '%-7s %5s %5s %6s  %s\n' figure done left failed "run data"
+  for f in "${figs[@]}"; do
+    local n=0 done=0 failed=0
+    while read -r file; do
+      n=$((n + 1))
+      [ -f "$here/$f/sweep/$file" ] && done=$((done + 1))
+    done < <(expected_files "$f")
+    if [ -f "$here/$f/sweep/manifest.json" ]; then
+      failed=$(grep -c '"status": "failed"' "$here/$f/sweep/manifest.json" || true)
+    fi
+    local size="-"
+    [ -d "$here/$f/sweep" ] && size=$(du -sh "$here/$f/sweep" | cut -f1)
+    printf '%-7s %5d %5d %6d  %s\n' "$f" "$done" $((n - done)) "$failed" "$size"
+    total_done=$((total_done + done))
+    total=$((total + n))
+  done
+  echo "all: $total_done of $total runs done; results/paper holds $(du -sh "$here" | cut -f1)" \
+    "(budget 150 MB)"
+}
+
+run() {  # FIG THREADS
+  local f=$1 threads=$2
+  local sweep=$here/$f/$f.sweep.json
+  [ -f "$sweep" ] || { echo "make.sh: no figure $f (one of ${figs[*]})" >&2; exit 2; }
+  local seeds
+  seeds=$(grep -o '"seeds": [0-9]*' "$sweep" | grep -o '[0-9]*$')
+  local tmp
+  tmp=$(mktemp -d)
+  trap 'rm -rf "$tmp"' RETURN
+  for stage in 2 5 "$seeds"; do
+    [ "$stage" -le "$seeds" ] || stage=$seeds
+    sed "s/\"seeds\": $seeds/\"seeds\": $stage/" "$sweep" > "$tmp/$f.sweep.json"
+    echo "== $f: seeds 1-$stage ($(date -u +%H:%M:%S) UTC)"
+    "$wp" sweep "$tmp/$f.sweep.json" --out "$here/$f/sweep" --threads "$threads"
+    [ "$stage" -lt "$seeds" ] || break
+  done
+}
+
+analyze() {  # FIG
+  local f=$1
+  [ -d "$here/$f/sweep/runs" ] || { echo "== $f: no run data yet"; return 0; }
+  "$wp" analyze "$here/$f/sweep" --out "$here/$f/analysis"
+}
+
+cmd=${1:-status}
+case "$cmd" in
+  status) status ;;
+  run)
+    [ $# -ge 2 ] || { echo "usage: make.sh run FIG [THREADS]" >&2; exit 2; }
+    run "$2" "${3:-$(nproc)}"
+    ;;
+  analyze)
+    shift
+    for f in "${@:-${figs[@]}}"; do analyze "$f"; done
+    ;;
+  *)
+    echo "usage: make.sh status | run FIG [THREADS] | analyze [FIG...]" >&2
+    exit 2
+    ;;
+esac

@@ -1,0 +1,70 @@
+#!/usr/bin/env bash
+# The comparison table of results/paper/README.md: every number the paper states, ours beside it
+# from the analysis tables (bash results/paper/make.sh analyze first). Rewrites the README's
+# section between the markers "<!-- table -->" and "<!-- /table -->"; prints the table.
+# difference in SE = (ours - paper) / sqrt(SE_ours^2 + SE_paper^2); verdict: |d| < 2 agrees,
+# 2 <= |d| < 5 differs, >= 5 disagrees; "not run" where the campaign has no data yet.
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+
+# value MU_S NAME FILE: "value stderr" of the row with mu_s = MU_S and column `name` (exponents)
+# or `quantity` (distributions) = NAME; for distributions NAME is quantity:mu or quantity:sigma.
+lookup() {
+  local mu=$1 name=$2 file=$3
+  [ -f "$file" ] || { echo "nan nan"; return; }
+  awk -F, -v mu="$mu" -v want="$name" '
+    NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next }
+    {
+      if ($c["mu_s"] + 0 != mu + 0) next
+      if ("name" in c) {
+        if ($c["name"] == want) { print $c["value"], $c["stderr"]; found = 1; exit }
+      } else {
+        split(want, q, ":")
+        if ($c["quantity"] == q[1] && $c["ok"] == "true") {
+          print $c[q[2]], $c[q[2] "_stderr"]; found = 1; exit
+        }
+      }
+    }
+    END { if (!found) print "nan nan" }' "$file"
+}
+
+row() {  # LABEL PAPER PAPER_SE "VALUE SE"
+  local label=$1 paper=$2 pse=$3 ours=$4
+  awk -v label="$label" -v p="$paper" -v ps="$pse" -v o="$ours" 'BEGIN {
+    split(o, v, " ")
+    if (v[1] == "nan" || v[1] == "") {
+      printf "| %s | %s%s | not run | | not run |\n", label, p, (ps == "" ? "" : " ± " ps); exit
+    }
+    se2 = (v[2] == "nan" ? 0 : v[2] * v[2]) + (ps == "" ? 0 : ps * ps)
+    d = se2 > 0 ? (v[1] - p) / sqrt(se2) : 0
+    a = d < 0 ? -d : d
+    verdict = se2 == 0 ? "no error bar" : (a < 2 ? "agrees" : (a < 5 ? "differs" : "disagrees"))
+    printf "| %s | %s%s | %.3f ± %.3f | %.1f | %s |\n", label, p, (ps == "" ? "" : " ± " ps),
+      v[1], (v[2] == "nan" ? 0 : v[2]), d, verdict
+  }'
+}
+
+ex=$here/fig4/analysis/exponents.csv
+di=$here/fig4/analysis/distributions.csv
+table=$(
+  echo "| quantity (paper's figure) | paper | wirepack mean ± SE | difference in SE | verdict |"
+  echo "| --- | --- | --- | --- | --- |"
+  row "α, R_t ~ l^α, coil μs = 0 (Fig. 4a)" 0.04 0.01 "$(lookup 0 alpha "$ex")"
+  row "β, R_x ~ l^β, coil (Fig. 4a)" 0.35 0.01 "$(lookup 0 beta "$ex")"
+  row "γ, R_y ~ l^γ, coil (Fig. 4a)" 0.46 0.01 "$(lookup 0 gamma "$ex")"
+  row "N ~ l in the coil (text: exponent 1)" 1 "" "$(lookup 0 tau "$ex")"
+  row "δ, Û_b ~ l^δ, crumpled μs = 1/2 (Fig. 4c)" 1.192 0.006 "$(lookup 0.5 delta "$ex")"
+  row "λ, K ~ l^λ, crumpled (Fig. 4d)" 1.083 0.004 "$(lookup 0.5 lambda "$ex")"
+  row "τ, N ~ l^τ, crumpled (Fig. 4b)" 1.40 0.01 "$(lookup 0.5 tau "$ex")"
+  row "mean of ln(κ²/⟨κ²⟩), crumpled (Fig. 6a)" -0.29 "" "$(lookup 0.5 kappa2:mu "$di")"
+  row "σ of ln(κ²/⟨κ²⟩) (Fig. 6a)" 0.83 "" "$(lookup 0.5 kappa2:sigma "$di")"
+  row "mean of ln(Λ/r), crumpled (Fig. 6b)" 3.0 "" "$(lookup 0.5 Lambda_over_r:mu "$di")"
+  row "σ of ln(Λ/r) (Fig. 6b)" 0.48 "" "$(lookup 0.5 Lambda_over_r:sigma "$di")"
+)
+echo "$table"
+readme=$here/README.md
+awk -v table="$table" '
+  /<!-- table -->/ { print; print table; skip = 1; next }
+  /<!-- \/table -->/ { skip = 0 }
+  !skip' "$readme" > "$readme.part"
+mv "$readme.part" "$readme"
