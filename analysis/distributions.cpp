@@ -177,4 +177,26 @@ std::vector<double> loop_lengths(Centerline x, double wire_radius) {
   return loop_lengths(x, wire_radius, LoopDetectorOptions{});
 }
 
+std::vector<LoopSensitivityRow> loop_sensitivity(const std::vector<std::vector<Vec3>>& wires,
+                                                 double wire_radius,
+                                                 std::span<const double> smoothings,
+                                                 std::span<const double> prominences) {
+  std::vector<LoopSensitivityRow> rows;
+  for (const double smoothing : smoothings) {
+    for (const double prominence : prominences) {
+      LoopSensitivityRow row;
+      row.smoothing_r = smoothing;
+      row.min_prominence = prominence;
+      std::vector<double> over_r;
+      for (const auto& x : wires)
+        for (const double Lambda : loop_lengths(x, wire_radius, {smoothing, prominence}))
+          over_r.push_back(Lambda / wire_radius);
+      row.loops = over_r.size();
+      row.fit = fit_lognormal(over_r);
+      rows.push_back(row);
+    }
+  }
+  return rows;
+}
+
 }  // namespace wirepack::analysis

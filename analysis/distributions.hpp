@@ -2,9 +2,11 @@
 // Distributions of the paper's section "Hierarchic disorder" (docs/design.md §5.6): the normalised
 // local squared curvature kappa^2 / <kappa^2> and the loop lengths Lambda between neighbouring
 // maxima of kappa^2 along the wire; both are fitted by lognormals (stats.hpp: fit_lognormal).
+#include <span>
 #include <vector>
 
 #include "analysis/observables.hpp"
+#include "analysis/stats.hpp"
 
 namespace wirepack::analysis {
 
@@ -50,6 +52,21 @@ struct LoopDetectorOptions {
 std::vector<double> loop_lengths(Centerline x, double wire_radius,
                                  const LoopDetectorOptions& options);
 std::vector<double> loop_lengths(Centerline x, double wire_radius);
+
+// How the loop parameters move with the detector's two settings (paper Fig. 6b; issue of the
+// reproduction): for every (smoothing_r, min_prominence) pair, the loops of all `wires` pooled
+// (each a centerline [m], e.g. one per seed) and their maximum-likelihood lognormal fit of
+// Lambda / r. Rows in the order smoothings x prominences (prominence varying fastest).
+struct LoopSensitivityRow {
+  double smoothing_r = 0;     // [-]
+  double min_prominence = 0;  // [-]
+  std::size_t loops = 0;      // loops found, all wires
+  LognormalFit fit;           // ln(Lambda / r) ~ N(mu, sigma^2)
+};
+std::vector<LoopSensitivityRow> loop_sensitivity(const std::vector<std::vector<Vec3>>& wires,
+                                                 double wire_radius,
+                                                 std::span<const double> smoothings,
+                                                 std::span<const double> prominences);
 
 // Step 1 above, exposed for inspection and tests: the coarse-grained centerline (n) [m].
 std::vector<Vec3> coarse_grained_centerline(Centerline x, double sigma);

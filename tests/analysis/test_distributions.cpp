@@ -193,6 +193,38 @@ TEST(LoopLengths, RecoversKnownLoopsDespiteNodeNoise) {
   }
 }
 
+TEST(LoopSensitivity, DefaultRowIsTheAnalysisFitAndProminenceOnlyRemovesLoops) {
+  // Two noisy samples of the known wire, pooled. The row at the default settings is exactly
+  // the lognormal fit of the default detector's loops; at fixed smoothing a higher prominence
+  // keeps a subset of the maxima, so the loop count never grows; and a prominence no maximum
+  // reaches (above 1: a maximum cannot rise above itself) finds no loop.
+  const Wire w = known_wire();
+  const std::vector<std::vector<Vec3>> wires{sample_wire(w, r, kNoise, 1),
+                                             sample_wire(w, r, kNoise, 2)};
+  const std::vector<double> smoothings{1.0, 2.0, 4.0};
+  const std::vector<double> prominences{0.1, 0.25, 0.5, 1.5};
+  const auto rows = loop_sensitivity(wires, r, smoothings, prominences);
+  ASSERT_EQ(rows.size(), 12u);
+  std::vector<double> pooled;
+  for (const auto& x : wires)
+    for (double L : loop_lengths(x, r)) pooled.push_back(L / r);
+  const LognormalFit expected = fit_lognormal(pooled);
+  const auto& def = rows[1 * 4 + 1];
+  EXPECT_EQ(def.smoothing_r, 2.0);
+  EXPECT_EQ(def.min_prominence, 0.25);
+  EXPECT_EQ(def.loops, pooled.size());
+  EXPECT_EQ(def.fit.mu, expected.mu);
+  EXPECT_EQ(def.fit.sigma, expected.sigma);
+  // The default finds the known wire's 12 loops in each sample.
+  EXPECT_EQ(def.loops, 2 * true_gaps(w).size());
+  for (std::size_t s = 0; s < smoothings.size(); ++s) {
+    for (std::size_t p = 1; p < prominences.size(); ++p)
+      EXPECT_LE(rows[s * 4 + p].loops, rows[s * 4 + p - 1].loops) << "smoothing " << smoothings[s];
+    EXPECT_EQ(rows[s * 4 + 3].loops, 0u);
+    EXPECT_FALSE(rows[s * 4 + 3].fit.ok);
+  }
+}
+
 TEST(LoopLengths, RawMaximaWouldCountNoise) {
   // Motivation for the coarse-graining: on the same noisy wire at ell = r/2, raw discrete kappa^2
   // has many times more local maxima than there are kinks.
