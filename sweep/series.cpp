@@ -74,6 +74,9 @@ const SeriesList& recorded_series() {
        [](C c) { return c.wall_s(); }},
       {"steps", "-", "accepted time steps so far",
        [](C c) { return static_cast<double>(c.sim().steps()); }},
+      {"S_kappa", "-",
+       "curvature-weighted order S_kappa = ∫κ_n ds / ∫|κ_n| ds (docs/design.md §5.3)",
+       [](C c) { return analysis::curvature_weighted_order(c.x()).S; }, 8},
   };
   return list;
 }
@@ -110,9 +113,15 @@ std::vector<std::string> accuracy_series(const SeriesList& list) {
 }
 
 std::string series_markdown(const SeriesList& list) {
+  // A '|' inside a cell is written as "\|" (GitHub's tables).
+  const auto cell = [](const std::string& text) {
+    std::string out;
+    for (const char c : text) out += c == '|' ? std::string("\\|") : std::string(1, c);
+    return out;
+  };
   std::string md = "| name | unit | meaning |\n| --- | --- | --- |\n";
   for (const auto& s : list)
-    md += "| `" + s.name + "` | " + s.unit + " | " + s.description + " |\n";
+    md += "| `" + s.name + "` | " + cell(s.unit) + " | " + cell(s.description) + " |\n";
   return md;
 }
 

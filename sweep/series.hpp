@@ -56,7 +56,8 @@ struct SeriesDef {
 using SeriesList = std::vector<SeriesDef>;
 
 // The recorded series, in column order: l, U_b_hat, U_b, U_t, U_s, U_m, U_sb, E_kin, K, N, S, D,
-// R_t, R_x, R_y, dt, wall_s, steps (descriptions and units in sweep/series.cpp and the README).
+// R_t, R_x, R_y, dt, wall_s, steps, S_kappa (descriptions and units in sweep/series.cpp and the
+// README).
 const SeriesList& recorded_series();
 
 // The names of `list`, in column order.
@@ -69,7 +70,7 @@ std::vector<std::string> analysis_series(const SeriesList& list = recorded_serie
 // The series compared by the accuracy study, in column order.
 std::vector<std::string> accuracy_series(const SeriesList& list = recorded_series());
 
-// The README's table of series (| name | unit | meaning |), one row per series, in column order.
+// The README's table of series (name, unit, meaning), one row per series, in column order.
 std::string series_markdown(const SeriesList& list = recorded_series());
 
 }  // namespace wirepack::sweep
