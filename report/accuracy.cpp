@@ -7,6 +7,7 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
@@ -18,6 +19,7 @@
 #include "sweep/errors.hpp"
 #include "sweep/format.hpp"
 #include "sweep/run_file.hpp"
+#include "sweep/series.hpp"
 #include "sweep/sweep_config.hpp"
 #include "sweep/sweep_manifest.hpp"
 
@@ -36,10 +38,22 @@ using sweep::write_file_atomic;
 
 namespace {
 
-// The compared series (relative RMS errors), in column order.
+// The compared series (relative RMS errors): those the series list marks, in its order.
 const std::vector<std::string>& compared_series() {
-  static const std::vector<std::string> names = {"U_b_hat", "K", "N"};
+  static const std::vector<std::string> names = sweep::accuracy_series();
   return names;
+}
+
+// The study names U_b_hat, K (err_UK), N (scaled by ell / r) among the compared series, and reads
+// l, D, steps and wall_s: a series list without them is a programming error.
+void check_accuracy_series() {
+  const auto& c = compared_series();
+  for (const char* name : {"U_b_hat", "K", "N"})
+    if (std::find(c.begin(), c.end(), name) == c.end())
+      throw std::logic_error(std::string("accuracy: series ") + name + " is not compared");
+  for (const char* name : {"l", "D", "steps", "wall_s"})
+    if (!sweep::find_series_def(name))
+      throw std::logic_error(std::string("accuracy: series ") + name + " is not recorded");
 }
 
 struct Run {
@@ -180,9 +194,12 @@ void compare(Row& row, const LWindow& w) {
   for (const auto& s : compared_series())
     row.errs.push_back(relative_rms_error(r.series.at("l"), r.series.at(s), ref.series.at("l"),
                                           ref.series.at(s), w.l_min, row.l_to));
-  row.err_UK = std::isfinite(row.errs[0]) && std::isfinite(row.errs[1])
-                   ? std::max(row.errs[0], row.errs[1])
-                   : NaN;
+  const auto err_of = [&](const std::string& name) {
+    const auto& c = compared_series();
+    return row.errs[std::find(c.begin(), c.end(), name) - c.begin()];
+  };
+  const double eU = err_of("U_b_hat"), eK = err_of("K");
+  row.err_UK = std::isfinite(eU) && std::isfinite(eK) ? std::max(eU, eK) : NaN;
 }
 
 std::string csv_text(const std::vector<Row>& rows, const LWindow& w) {
@@ -258,6 +275,7 @@ double relative_rms_error(const std::vector<double>& l, const std::vector<double
 }
 
 AccuracyResult accuracy_study(const AccuracyOptions& o) {
+  check_accuracy_series();
   if (o.dirs.empty()) throw InputError("accuracy: at least one sweep directory is needed");
   if (!(o.window.l_min < o.window.l_max))
     throw InputError("accuracy: --window: L_MIN must be < L_MAX");

@@ -57,8 +57,10 @@ AnalyzeResult analyze_sweep(const AnalyzeOptions& o) {
   a.settings = default_analysis_settings();
   Directory d = open_directory(o.dir, a.settings);
   apply_flags(o, a.settings);
+  check_named_series(o.series);
+  a.kept = kept_series(o.series);
   if (!d.manifest.empty()) result.settings_source = d.manifest;
-  read_runs(o.dir, d, a.settings);
+  read_runs(o.dir, d, a.settings, a.kept);
   a.runs = std::move(d.runs);
   group(a, d.sweep);
 
@@ -68,7 +70,7 @@ AnalyzeResult analyze_sweep(const AnalyzeOptions& o) {
   // Tables.
   const Fits fits = fit_all(a);
   std::vector<MeanSeries> series;
-  for (const auto& p : a.points) series.push_back(mean_series(p));
+  for (const auto& p : a.points) series.push_back(mean_series(p, a.kept));
   a.distribution_l = a.settings.distribution_l ? *a.settings.distribution_l : common_snapshot_l(a);
   const auto samples = distribution_samples(o.dir, a);
   Distributions dists;
@@ -160,7 +162,9 @@ CriticalData read_critical_data(const AnalyzeOptions& o) {
   a.settings = default_analysis_settings();
   Directory d = open_directory(o.dir, a.settings);
   apply_flags(o, a.settings);
-  read_runs(o.dir, d, a.settings);
+  check_named_series(o.series);
+  a.kept = kept_series(o.series);
+  read_runs(o.dir, d, a.settings, a.kept);
   a.runs = std::move(d.runs);
   group(a, d.sweep);
   CriticalData c;

@@ -5,6 +5,7 @@
 #include <limits>
 #include <numbers>
 #include <set>
+#include <stdexcept>
 
 #include "analysis/purohit.hpp"
 #include "report/csv_table.hpp"
@@ -31,9 +32,21 @@ double last_of(const std::vector<double>* v) {
 
 }  // namespace
 
-const std::vector<std::string>& kept_series() {
-  static const std::vector<std::string> names = {"D", "U_b_hat", "K", "N", "R_t", "R_x", "R_y"};
-  return names;
+std::vector<std::string> kept_series(const sweep::SeriesList& list) {
+  return sweep::analysis_series(list);
+}
+
+void check_named_series(const sweep::SeriesList& list) {
+  std::vector<std::string> named = {"D", "U_b_hat", "K", "N", "R_t", "R_x", "R_y"};
+  for (const auto& e : exponent_specs()) named.push_back(e.series);
+  const auto kept = kept_series(list);
+  std::set<std::string> missing;
+  for (const auto& name : named)
+    if (std::find(kept.begin(), kept.end(), name) == kept.end()) missing.insert(name);
+  if (missing.empty()) return;
+  std::string names;
+  for (const auto& name : missing) names += (names.empty() ? "" : ", ") + name;
+  throw std::logic_error("series named by the analysis but not kept by the series list: " + names);
 }
 
 const std::vector<std::string>& predicted_series() {
@@ -263,7 +276,7 @@ Fits fit_all(const Analysis& a) {
   return fits;
 }
 
-MeanSeries mean_series(const GridPoint& p) {
+MeanSeries mean_series(const GridPoint& p, const std::vector<std::string>& kept) {
   MeanSeries m;
   if (p.complete.empty()) return m;
   const double every = p.complete.front()->every_l;
@@ -279,7 +292,7 @@ MeanSeries mean_series(const GridPoint& p) {
       ks.insert(k);
     }
   }
-  const auto names = cat(kept_series(), predicted_series());
+  const auto names = cat(kept, predicted_series());
   for (const long long k : ks) {
     // Nominal l, rounded to 1e-9 so that 3 x 0.1 reads 0.3.
     m.l.push_back(std::round(static_cast<double>(k) * every * 1e9) / 1e9);

@@ -17,14 +17,19 @@
 #include "analysis/stats.hpp"
 #include "report/critical_table.hpp"
 #include "report/settings.hpp"
+#include "sweep/series.hpp"
 #include "sweep/sweep_config.hpp"
 
 namespace wirepack::report {
 
 using analysis::NaN;
 
-// The series kept per complete run (the summary quantities of series.csv).
-const std::vector<std::string>& kept_series();
+// The series kept per complete run (the columns of series.csv): those of `list` with an
+// analysis_rank, by rank.
+std::vector<std::string> kept_series(const sweep::SeriesList& list = sweep::recorded_series());
+// The series the reductions name as physics quantities (summarize_run, exponent_specs): D,
+// U_b_hat, K, N, R_t, R_x, R_y. Throws std::logic_error naming those `list` does not keep.
+void check_named_series(const sweep::SeriesList& list);
 // Purohit predictions added per row by summarize_run.
 const std::vector<std::string>& predicted_series();
 
@@ -93,6 +98,7 @@ struct Analysis {
   std::vector<std::string> params;  // parameter columns (pointers)
   std::vector<std::string> param_names;
   double distribution_l = NaN;
+  std::vector<std::string> kept = kept_series();  // series kept per run (series.csv order)
 };
 
 // Groups a.runs into grid points by their key, orders points (by the swept parameters, the
@@ -132,7 +138,8 @@ struct MeanSeries {
   std::vector<std::size_t> n;
   std::map<std::string, std::vector<analysis::MeanSem>> q;  // by series name
 };
-MeanSeries mean_series(const GridPoint& p);
+// `kept`: the series averaged besides the Purohit ones (each run holds them).
+MeanSeries mean_series(const GridPoint& p, const std::vector<std::string>& kept = kept_series());
 
 // The last snapshot l that every complete run has (rounded to 0.001), NaN without complete runs.
 double common_snapshot_l(const Analysis& a);

@@ -10,6 +10,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "sweep/series.hpp"
+
 namespace wirepack::report {
 
 // A closed interval of l = L / R.
@@ -65,6 +67,8 @@ struct AnalyzeOptions {
   std::optional<int> resamples;              // bootstrap resamples
   std::vector<std::string> critical_ranges;  // "NAME=X_MIN,X_MAX" (mu_s, eps, xi, rho)
   std::string gnuplot = "gnuplot";           // plotting program (PATH is searched); "" = no plots
+  // The recorded series (docs/design.md §5.7); the analysis keeps those with an analysis_rank.
+  sweep::SeriesList series = sweep::recorded_series();
 };
 
 // Applies the command-line overrides of `o` onto `s`. Throws InputError naming the flag.

@@ -72,7 +72,8 @@ double last_of(const std::vector<double>* v) {
 
 }  // namespace
 
-void read_run(const fs::path& dir, RunData& r, const AnalysisSettings& settings) {
+void read_run(const fs::path& dir, RunData& r, const AnalysisSettings& settings,
+              const std::vector<std::string>& kept) {
   RunRecord rec;
   try {
     rec = read_run_file((dir / r.file).string());
@@ -91,7 +92,7 @@ void read_run(const fs::path& dir, RunData& r, const AnalysisSettings& settings)
 
   const std::size_t rows = series_rows(rec);
   r.series["l"] = series_column(rec, "l", rows);
-  for (const auto& name : kept_series()) r.series[name] = series_column(rec, name, rows);
+  for (const auto& name : kept) r.series[name] = series_column(rec, name, rows);
 
   const double every = number_at(rec.config, "/output/every_l");
   if (std::isfinite(every) && every > 0) r.every_l = every;
@@ -142,9 +143,10 @@ Directory open_directory(const std::string& dir_text, AnalysisSettings& settings
   return d;
 }
 
-void read_runs(const std::string& dir, Directory& d, const AnalysisSettings& settings) {
+void read_runs(const std::string& dir, Directory& d, const AnalysisSettings& settings,
+               const std::vector<std::string>& kept) {
   for (auto& r : d.runs)
-    if (r.status.empty()) read_run(dir, r, settings);
+    if (r.status.empty()) read_run(dir, r, settings, kept);
 }
 
 std::vector<Samples> distribution_samples(const fs::path& dir, const Analysis& a) {

@@ -33,9 +33,10 @@ std::vector<double> series_column(const sweep::RunRecord& record, const std::str
 // The rows of a run record: the length of its series "l" (0 without one).
 std::size_t series_rows(const sweep::RunRecord& record);
 
-// Reads `r.file` (relative to `dir`, known to exist): status, series, snapshots' l, then
-// summarize_run. An unreadable file sets status "unreadable" and the reason.
-void read_run(const std::filesystem::path& dir, RunData& r, const AnalysisSettings& settings);
+// Reads `r.file` (relative to `dir`, known to exist): status, the series l and `kept`, the
+// snapshots' l, then summarize_run. An unreadable file sets status "unreadable" and the reason.
+void read_run(const std::filesystem::path& dir, RunData& r, const AnalysisSettings& settings,
+              const std::vector<std::string>& kept = kept_series());
 
 struct Directory {
   std::optional<sweep::Sweep> sweep;  // from the manifest, when there is one
@@ -47,8 +48,9 @@ struct Directory {
 // expected or found, by file name; nothing is read from the run files yet. Throws InputError.
 Directory open_directory(const std::string& dir, AnalysisSettings& settings);
 
-// Reads every run file that exists.
-void read_runs(const std::string& dir, Directory& d, const AnalysisSettings& settings);
+// Reads every run file that exists (read_run).
+void read_runs(const std::string& dir, Directory& d, const AnalysisSettings& settings,
+               const std::vector<std::string>& kept = kept_series());
 
 // The distribution samples of each point at a.distribution_l, from the runs' snapshots.
 std::vector<Samples> distribution_samples(const std::filesystem::path& dir, const Analysis& a);

@@ -121,7 +121,7 @@ std::string exponents_csv(const Analysis& a, const Fits& fits) {
 std::string series_csv(const Analysis& a, const std::vector<MeanSeries>& ms) {
   std::vector<std::string> header =
       cat(std::vector<std::string>{"point"}, a.param_names, std::vector<std::string>{"l", "n"});
-  const auto names = cat(kept_series(), predicted_series());
+  const auto names = cat(a.kept, predicted_series());
   for (const auto& name : names) {
     header.push_back(name + "_mean");
     header.push_back(name + "_sem");

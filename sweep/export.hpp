@@ -5,7 +5,8 @@
 
 namespace wirepack::sweep {
 
-// One header row with the series names in recording order, then one row per record;
+// One header row with the run file's series names in recording order (the columns of
+// recorded_series() when the run was made, docs/design.md §5.7), then one row per record;
 // numbers in shortest round-trip form ("nan" where an observable is undefined).
 // Throws RunFileError if the run file cannot be read or the CSV cannot be written.
 void export_csv(const std::string& run_file, const std::string& csv_path);

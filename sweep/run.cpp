@@ -1,10 +1,8 @@
 #include "sweep/run.hpp"
 
-#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <limits>
 #include <memory>
 
 #include "analysis/observables.hpp"
@@ -14,40 +12,8 @@
 
 namespace wirepack::sweep {
 
-namespace {
-
-// Column indices of the series, in recording order.
-enum Column {
-  l_,
-  U_b_hat,
-  U_b,
-  U_t,
-  U_s,
-  U_m,
-  U_sb,
-  E_kin,
-  K,
-  N,
-  S,
-  D,
-  R_t,
-  R_x,
-  R_y,
-  dt,
-  wall_s,
-  steps,
-  kColumns
-};
-
-// Names per Column (docs/design.md §5.7); the array size ties them to the enum.
-constexpr std::array<const char*, kColumns> kNames = {
-    "l", "U_b_hat", "U_b", "U_t", "U_s", "U_m", "U_sb", "E_kin",  "K",
-    "N", "S",       "D",   "R_t", "R_x", "R_y", "dt",   "wall_s", "steps"};
-
-}  // namespace
-
 const std::vector<std::string>& series_names() {
-  static const std::vector<std::string> names(kNames.begin(), kNames.end());
+  static const std::vector<std::string> names = names_of(recorded_series());
   return names;
 }
 
@@ -55,39 +21,16 @@ namespace {
 
 class Recorder {
  public:
-  Recorder(const Scene& scene, RunRecord& record) : scene_(scene), record_(record) {
-    for (const auto& name : series_names()) record_.series.push_back({name, {}});
+  Recorder(const Scene& scene, RunRecord& record, const SeriesList& list)
+      : scene_(scene), record_(record), list_(list) {
+    for (const auto& s : list_) record_.series.push_back({s.name, {}});
   }
 
   // One row of every series (docs/design.md §5.7) from the current state.
   void row(const Simulation& sim, double wall) {
-    const SceneParams& p = scene_.engine;
-    const auto x = sim.inside_nodes();
-    const Energies e = sim.energies();
-    const double R = p.R();
-    const auto order = analysis::order_parameter(x);
-    const auto radii = analysis::coil_radii(x, p.wire.radius);
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    double v[kColumns];
-    v[l_] = sim.l();
-    v[U_b_hat] = analysis::bending_energy_hat(e.U_b, p.wire.radius, R, p.wire.youngs_modulus);
-    v[U_b] = e.U_b;
-    v[U_t] = e.U_t;
-    v[U_s] = e.U_s;
-    v[U_m] = e.U_m;
-    v[U_sb] = e.U_sb;
-    v[E_kin] = e.E_kin;
-    v[K] = analysis::total_curvature(x);
-    v[N] = sim.wire_contacts();
-    v[S] = order.S;
-    v[D] = order.D;
-    v[R_t] = radii.ok ? radii.R_t / R : nan;
-    v[R_x] = radii.ok ? radii.R_x / R : nan;
-    v[R_y] = radii.ok ? radii.R_y / R : nan;
-    v[dt] = sim.dt();
-    v[wall_s] = wall;
-    v[steps] = static_cast<double>(sim.steps());
-    for (int c = 0; c < kColumns; ++c) record_.series[c].values.push_back(v[c]);
+    const SeriesContext context(sim, scene_.engine, wall);
+    for (std::size_t c = 0; c < list_.size(); ++c)
+      record_.series[c].values.push_back(list_[c].compute(context));
     last_row_l_ = sim.l();
   }
 
@@ -120,6 +63,7 @@ class Recorder {
  private:
   const Scene& scene_;
   RunRecord& record_;
+  const SeriesList& list_;
   double last_row_l_ = -1;
   double last_snapshot_l_ = -1;
 };
@@ -137,7 +81,7 @@ std::string progress_line(double l, double l_max, double wall, bool done = false
 }  // namespace
 
 RunOutcome run_scene(const Scene& scene, const std::string& out_path, std::ostream* progress,
-                     const std::function<int()>& threads) {
+                     const std::function<int()>& threads, const SeriesList& series) {
   using clock = std::chrono::steady_clock;
   const auto t0 = clock::now();
   const auto wall = [&] { return std::chrono::duration<double>(clock::now() - t0).count(); };
@@ -150,7 +94,7 @@ RunOutcome run_scene(const Scene& scene, const std::string& out_path, std::ostre
   record.version = build_version();
   record.git = build_git();
   record.started = utc_now_iso8601();
-  Recorder rec(scene, record);
+  Recorder rec(scene, record, series);
   RunOutcome out;
 
   std::unique_ptr<Simulation> sim;

@@ -7,6 +7,7 @@
 
 #include "sweep/run_file.hpp"
 #include "sweep/scene_config.hpp"
+#include "sweep/series.hpp"
 
 namespace wirepack::sweep {
 
@@ -18,9 +19,7 @@ struct RunOutcome {
   double wall_s = 0;                      // wall-clock duration [s]
 };
 
-// Names of the recorded series, in column order: l, U_b_hat, U_b, U_t, U_s, U_m, U_sb, E_kin,
-// K, N, S, D, R_t, R_x, R_y, dt, wall_s, steps. Radii are divided by R (NaN when the coil fit
-// fails); energies in J; dt and wall_s in s.
+// Names of the recorded series (sweep/series.hpp), in column order.
 const std::vector<std::string>& series_names();
 
 // Simulates `scene` to l_max. Records the series at l = 0, every output.every_l and at the end;
@@ -30,8 +29,10 @@ const std::vector<std::string>& series_names();
 // reason. The run file is written once, at the end (write-then-rename); a failure to write it
 // throws RunFileError. `threads` (empty: 1) says how many threads the simulation's force loops
 // may use; it is asked again every 64 steps, so a sweep can give its idle cores to the runs
-// still going. The result does not depend on it (bitwise).
+// still going. The result does not depend on it (bitwise). `series`: the columns recorded, one
+// value of each per row, in its order.
 RunOutcome run_scene(const Scene& scene, const std::string& out_path, std::ostream* progress,
-                     const std::function<int()>& threads = {});
+                     const std::function<int()>& threads = {},
+                     const SeriesList& series = recorded_series());
 
 }  // namespace wirepack::sweep

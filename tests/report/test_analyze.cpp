@@ -317,10 +317,12 @@ TEST_F(Analyze, ExponentsRecoverSyntheticPowerLaws) {
 TEST_F(Analyze, SeriesAreSeedMeansWithPurohitPredictions) {
   analyze();
   const Csv c = read_csv(out("series.csv"));
-  EXPECT_EQ(c.header, "point," + kParams +
-                          ",l,n,D_mean,D_sem,U_b_hat_mean,U_b_hat_sem,K_mean,K_sem,N_mean,N_sem,"
-                          "R_t_mean,R_t_sem,R_x_mean,R_x_sem,R_y_mean,R_y_sem,"
-                          "U_b_hat_purohit_mean,U_b_hat_purohit_sem,K_purohit_mean,K_purohit_sem");
+  EXPECT_EQ(
+      c.header,
+      "point," + kParams +
+          ",l,n,D_mean,D_sem,U_b_hat_mean,U_b_hat_sem,K_mean,K_sem,N_mean,N_sem,"
+          "R_t_mean,R_t_sem,R_x_mean,R_x_sem,R_y_mean,R_y_sem,S_kappa_mean,"
+          "S_kappa_sem,U_b_hat_purohit_mean,U_b_hat_purohit_sem,K_purohit_mean,K_purohit_sem");
   ASSERT_EQ(c.rows.size(), 201u + 201u);
   const auto& row = c.rows[100];  // point 0, l = 10
   EXPECT_EQ(row.at("point"), "0");

@@ -41,6 +41,7 @@ RunData made_up_run(double mu_s, int seed, double d0) {
     r.series["R_t"].push_back(0.5 * std::sqrt(l));
     r.series["R_x"].push_back(NaN);
     r.series["R_y"].push_back(NaN);
+    r.series["S_kappa"].push_back(1 - d0 / l);
   }
   r.every_l = 1;
   return r;
@@ -101,6 +102,7 @@ TEST(Reductions, SeedMeansAndExponents) {
   EXPECT_EQ(m.n[0], 2u);
   EXPECT_DOUBLE_EQ(m.q.at("D")[1].mean, 0.2);  // (0.1 + 0.3) / 2 at l = 2
   EXPECT_DOUBLE_EQ(m.q.at("D")[1].sem, 0.1);
+  EXPECT_DOUBLE_EQ(m.q.at("S_kappa")[1].mean, 0.8);  // every kept series is averaged
 
   const Fits fits = fit_all(a);
   ASSERT_EQ(fits.size(), 1u);

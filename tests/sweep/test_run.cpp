@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "analysis/observables.hpp"
 #include "sweep/temp_dir.hpp"
 
 namespace wirepack::sweep {
@@ -28,9 +29,9 @@ Scene short_rigid(double l_max) {
 }
 
 TEST(Run, SeriesNames) {
-  const std::vector<std::string> expected = {"l",    "U_b_hat", "U_b", "U_t", "U_s",    "U_m",
-                                             "U_sb", "E_kin",   "K",   "N",   "S",      "D",
-                                             "R_t",  "R_x",     "R_y", "dt",  "wall_s", "steps"};
+  const std::vector<std::string> expected = {
+      "l", "U_b_hat", "U_b", "U_t", "U_s", "U_m", "U_sb",   "E_kin", "K",      "N",
+      "S", "D",       "R_t", "R_x", "R_y", "dt",  "wall_s", "steps", "S_kappa"};
   EXPECT_EQ(series_names(), expected);
 }
 
@@ -73,6 +74,7 @@ TEST(Run, ShortRigidRun) {
   for (double x : r.find_series("dt")->values) EXPECT_GT(x, 0);
   for (const char* name : {"R_t", "R_x", "R_y"})
     for (double x : r.find_series(name)->values) EXPECT_TRUE(std::isnan(x) || x >= 0) << name;
+  for (double x : r.find_series("S_kappa")->values) EXPECT_TRUE(x >= -1 && x <= 1) << x;
 
   // Snapshots at the start, every 0.5 and at the end.
   ASSERT_GE(r.snapshots.size(), 3u);
@@ -85,6 +87,11 @@ TEST(Run, ShortRigidRun) {
   // The wire inside stays within the sphere of radius R = 10 mm (plus the wire radius).
   for (const auto& x : last.wire)
     EXPECT_LT(std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]), 10.5e-3);
+  // The last row and the last snapshot are the same state: S_kappa is that of its wire.
+  ASSERT_EQ(last.l, l.back());
+  std::vector<Vec3> wire;
+  for (const auto& x : last.wire) wire.emplace_back(x[0], x[1], x[2]);
+  EXPECT_EQ(r.find_series("S_kappa")->values.back(), analysis::curvature_weighted_order(wire).S);
 }
 
 TEST(Run, FailedRunStillWritesFile) {
