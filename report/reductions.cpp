@@ -85,6 +85,18 @@ void summarize_run(RunData& r, const AnalysisSettings& settings) {
     r.D = *std::max_element(in_window.begin(), in_window.end());
     r.D_avg = analysis::mean_sem(in_window).mean;
   }
+  // A variant's maximum over the window; NaN when its series is absent or all NaN there.
+  const auto window_max = [&](const std::vector<double>& y) {
+    const std::vector<double> v = values_in_window(L, y, settings.D_window);
+    return v.empty() ? NaN : *std::max_element(v.begin(), v.end());
+  };
+  if (const auto it = r.series.find("D_chord"); it != r.series.end())
+    r.D_chord = window_max(it->second);
+  if (const auto it = r.series.find("S_kappa"); it != r.series.end()) {
+    std::vector<double> D_kappa;
+    for (const double S : it->second) D_kappa.push_back(1 - std::abs(S));
+    r.D_kappa = window_max(D_kappa);
+  }
   r.U_b_hat = last_of(&r.series["U_b_hat"]);
   r.K = last_of(&r.series["K"]);
   r.N = last_of(&r.series["N"]);

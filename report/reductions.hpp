@@ -45,6 +45,9 @@ struct RunData {
 
   // runs.csv quantities (complete runs; l_reached and wall_s also for failed ones)
   double D = NaN, D_avg = NaN, l_reached = NaN, wall_s = NaN, U_b_hat = NaN, K = NaN, N = NaN;
+  // The order parameter's variants (docs/design.md §5.3) maximised over the D window like D:
+  // series D_chord, and 1 - |S_kappa|; NaN for run files recorded before those series.
+  double D_chord = NaN, D_kappa = NaN;
   // complete runs: series by name (l, kept_series, predicted_series), equal lengths
   std::map<std::string, std::vector<double>> series;
   double every_l = 0.1;            // output.every_l of the run
@@ -62,8 +65,8 @@ std::vector<double> values_in_window(const std::vector<double>& l, const std::ve
 double number_at(const nlohmann::json& config, const char* pointer);
 
 // A complete run's quantities from its series "l" and kept_series(): D and D_avg over the D
-// window, the last U_b_hat, K, N, and the Purohit series (paper Eqs. 4-7) from its radii.
-// Nothing for a run that is not complete.
+// window, the maxima of D_chord and D_kappa = 1 - |S_kappa| there, the last U_b_hat, K, N, and the
+// Purohit series (paper Eqs. 4-7) from its radii. Nothing for a run that is not complete.
 void summarize_run(RunData& r, const AnalysisSettings& settings);
 
 // The index of the snapshot nearest to l, if one lies within 0.05 in l.

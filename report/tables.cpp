@@ -24,28 +24,35 @@ std::vector<std::string> mean_sem_cells(std::span<const double> xs) {
 // The run quantities averaged in curves.csv, with their accessors.
 const std::vector<std::pair<std::string, double RunData::*>>& curve_quantities() {
   static const std::vector<std::pair<std::string, double RunData::*>> q = {
-      {"D", &RunData::D},          {"D_avg", &RunData::D_avg}, {"U_b_hat", &RunData::U_b_hat},
-      {"K", &RunData::K},          {"N", &RunData::N},         {"l_reached", &RunData::l_reached},
-      {"wall_s", &RunData::wall_s}};
+      {"D", &RunData::D},
+      {"D_avg", &RunData::D_avg},
+      {"U_b_hat", &RunData::U_b_hat},
+      {"K", &RunData::K},
+      {"N", &RunData::N},
+      {"l_reached", &RunData::l_reached},
+      {"wall_s", &RunData::wall_s},
+      {"D_chord", &RunData::D_chord},
+      {"D_kappa", &RunData::D_kappa}};
   return q;
 }
 
 }  // namespace
 
 std::string runs_csv(const Analysis& a) {
-  Table t(cat(std::vector<std::string>{"file", "point"}, a.param_names,
-              std::vector<std::string>{"seed", "status", "reason", "D_l_min", "D_l_max", "D",
-                                       "D_avg", "l_reached", "wall_s", "U_b_hat", "K", "N"}));
+  Table t(cat(
+      std::vector<std::string>{"file", "point"}, a.param_names,
+      std::vector<std::string>{"seed", "status", "reason", "D_l_min", "D_l_max", "D", "D_avg",
+                               "l_reached", "wall_s", "U_b_hat", "K", "N", "D_chord", "D_kappa"}));
   for (const auto& r : a.runs) {
     std::vector<std::string> params(a.params.size());
     if (r.point >= 0) params = param_cells(a, a.points[r.point]);
     t.add(cat(
         std::vector<std::string>{csv_field(r.file), r.point >= 0 ? std::to_string(r.point) : ""},
         params,
-        std::vector<std::string>{cell(r.seed), r.status, csv_field(r.reason),
-                                 num(a.settings.D_window.l_min), num(a.settings.D_window.l_max),
-                                 num(r.D), num(r.D_avg), num(r.l_reached), num(r.wall_s),
-                                 num(r.U_b_hat), num(r.K), num(r.N)}));
+        std::vector<std::string>{
+            cell(r.seed), r.status, csv_field(r.reason), num(a.settings.D_window.l_min),
+            num(a.settings.D_window.l_max), num(r.D), num(r.D_avg), num(r.l_reached), num(r.wall_s),
+            num(r.U_b_hat), num(r.K), num(r.N), num(r.D_chord), num(r.D_kappa)}));
   }
   return t.text();
 }
@@ -78,7 +85,9 @@ std::string view_csv(const Analysis& a, const View& v) {
   std::vector<std::string> header;
   for (const auto& o : v.others) header.push_back(column_name(o));
   header.push_back(v.name);
-  for (const char* h : {"n", "D_mean", "D_sem", "D_l_min", "D_l_max"}) header.push_back(h);
+  for (const char* h : {"n", "D_mean", "D_sem", "D_l_min", "D_l_max", "D_chord_mean", "D_chord_sem",
+                        "D_kappa_mean", "D_kappa_sem"})
+    header.push_back(h);
   Table t(header);
   for (const std::size_t i : v.order) {
     const GridPoint& p = a.points[i];
@@ -89,6 +98,8 @@ std::string view_csv(const Analysis& a, const View& v) {
     for (auto& c : mean_sem_cells(values(p, &RunData::D))) row.push_back(std::move(c));
     row.push_back(num(a.settings.D_window.l_min));
     row.push_back(num(a.settings.D_window.l_max));
+    for (const auto field : {&RunData::D_chord, &RunData::D_kappa})
+      for (auto& c : mean_sem_cells(values(p, field))) row.push_back(std::move(c));
     t.add(row);
   }
   return t.text();

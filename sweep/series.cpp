@@ -17,6 +17,12 @@ const analysis::Order& SeriesContext::order() const {
   return *order_;
 }
 
+std::size_t SeriesContext::chord_start() const {
+  if (!chord_start_)
+    chord_start_ = entry_chord_start(x_, params_, sim_.shell_vertices(), sim_.shell_triangles());
+  return *chord_start_;
+}
+
 const analysis::CoilRadii& SeriesContext::radii() const {
   if (!radii_) radii_ = analysis::coil_radii(x_, params_.wire.radius);
   return *radii_;
@@ -77,6 +83,17 @@ const SeriesList& recorded_series() {
       {"S_kappa", "-",
        "curvature-weighted order S_kappa = ∫κ_n ds / ∫|κ_n| ds (docs/design.md §5.3)",
        [](C c) { return analysis::curvature_weighted_order(c.x()).S; }, 8},
+      {"D_chord", "-",
+       "D of the wire without its entry chord (from the hole to its first contact; "
+       "docs/design.md §5.3); 1 while nothing touches",
+       [](C c) { return analysis::order_parameter(c.x().first(c.chord_start())).D; }, 9},
+      {"chord", "-", "length of the entry chord / R",
+       [](C c) {
+         double length = 0;
+         for (std::size_t i = c.chord_start(); i + 1 < c.x().size(); ++i)
+           length += (c.x()[i + 1] - c.x()[i]).norm();
+         return length / c.R();
+       }},
   };
   return list;
 }

@@ -12,6 +12,7 @@
 
 #include "analysis/observables.hpp"
 #include "engine/simulation.hpp"
+#include "sweep/wire_profile.hpp"
 
 namespace wirepack::sweep {
 
@@ -32,6 +33,8 @@ class SeriesContext {
   double wall_s() const { return wall_s_; }  // wall-clock seconds since the run started
   const analysis::Order& order() const;
   const analysis::CoilRadii& radii() const;
+  // Index where the entry chord starts (sweep/wire_profile.hpp: nodes chord_start..n-1).
+  std::size_t chord_start() const;
 
  private:
   const Simulation& sim_;
@@ -41,6 +44,7 @@ class SeriesContext {
   double wall_s_;
   mutable std::optional<analysis::Order> order_;
   mutable std::optional<analysis::CoilRadii> radii_;
+  mutable std::optional<std::size_t> chord_start_;
 };
 
 struct SeriesDef {
@@ -56,8 +60,8 @@ struct SeriesDef {
 using SeriesList = std::vector<SeriesDef>;
 
 // The recorded series, in column order: l, U_b_hat, U_b, U_t, U_s, U_m, U_sb, E_kin, K, N, S, D,
-// R_t, R_x, R_y, dt, wall_s, steps, S_kappa (descriptions and units in sweep/series.cpp and the
-// README).
+// R_t, R_x, R_y, dt, wall_s, steps, S_kappa, D_chord, chord (descriptions and units in
+// sweep/series.cpp and the README).
 const SeriesList& recorded_series();
 
 // The names of `list`, in column order.

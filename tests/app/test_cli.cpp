@@ -161,8 +161,9 @@ TEST(Cli, ShortRunAndExport) {
   ASSERT_EQ(e.code, 0) << e.err;
   const std::string csv = read_text(dir / "run.csv");
   EXPECT_EQ(
-      csv.rfind(
-          "l,U_b_hat,U_b,U_t,U_s,U_m,U_sb,E_kin,K,N,S,D,R_t,R_x,R_y,dt,wall_s,steps,S_kappa\n", 0),
+      csv.rfind("l,U_b_hat,U_b,U_t,U_s,U_m,U_sb,E_kin,K,N,S,D,R_t,R_x,R_y,dt,wall_s,steps,S_kappa,"
+                "D_chord,chord\n",
+                0),
       0u);
   EXPECT_NE(read_text(dir / "run.xmf").find("run.h5:/snapshots/"), std::string::npos);
 }

@@ -89,6 +89,7 @@ RunRecord make_run(const SweepRun& run, std::size_t i, bool nan_radii) {
     v["N"].push_back(3 * s * l * l);
     v["D"].push_back(l < 5 ? 0.95 : k == 100 ? kDmax[i] : 0.1);
     v["S"].push_back(1 - v["D"].back());
+    v["D_chord"].push_back(0.5 * v["D"].back());  // S_kappa stays 0: D_kappa = 1
     v["R_t"].push_back(nan_radii ? NAN : Rt(l));
     v["R_x"].push_back(nan_radii ? NAN : Rx(l));
     v["R_y"].push_back(nan_radii ? NAN : Ry(l));
@@ -189,7 +190,8 @@ TEST_F(Analyze, CurvesGroupSeedsWithExactMeanAndSem) {
   EXPECT_EQ(c.header, "point," + kParams +
                           ",n,n_failed,n_missing,D_l_min,D_l_max,D_mean,D_sem,D_avg_mean,"
                           "D_avg_sem,U_b_hat_mean,U_b_hat_sem,K_mean,K_sem,N_mean,N_sem,"
-                          "l_reached_mean,l_reached_sem,wall_s_mean,wall_s_sem");
+                          "l_reached_mean,l_reached_sem,wall_s_mean,wall_s_sem,D_chord_mean,"
+                          "D_chord_sem,D_kappa_mean,D_kappa_sem");
   ASSERT_EQ(c.rows.size(), 2u);
   const auto& p0 = c.rows[0];
   const auto& p1 = c.rows[1];
@@ -217,7 +219,14 @@ TEST_F(Analyze, CurvesGroupSeedsWithExactMeanAndSem) {
   EXPECT_EQ(p0.at("l_reached_sem"), "0");
 
   const Csv v = read_csv(out("D_vs_mu_s.csv"));
-  EXPECT_EQ(v.header, "mu_s,n,D_mean,D_sem,D_l_min,D_l_max");
+  EXPECT_EQ(v.header,
+            "mu_s,n,D_mean,D_sem,D_l_min,D_l_max,D_chord_mean,D_chord_sem,D_kappa_mean,"
+            "D_kappa_sem");
+  // The variants are maximised over the window like D: D_chord = D / 2, D_kappa = 1 - |0|.
+  EXPECT_NEAR(d(v.rows[1].at("D_chord_mean")), 0.5 * d(p1.at("D_mean")), 1e-15);
+  EXPECT_NEAR(d(v.rows[1].at("D_chord_sem")), 0.5 * d(p1.at("D_sem")), 1e-15);
+  EXPECT_EQ(v.rows[1].at("D_kappa_mean"), "1");
+  EXPECT_EQ(v.rows[1].at("D_kappa_sem"), "0");
   ASSERT_EQ(v.rows.size(), 2u);
   EXPECT_EQ(v.rows[1].at("mu_s"), "0.5");
   EXPECT_EQ(v.rows[1].at("D_mean"), p1.at("D_mean"));
@@ -229,7 +238,7 @@ TEST_F(Analyze, RunsListsEveryRunWithItsStatus) {
   const Csv c = read_csv(out("runs.csv"));
   EXPECT_EQ(c.header, "file,point," + kParams +
                           ",seed,status,reason,D_l_min,D_l_max,D,D_avg,l_reached,wall_s,U_b_hat,K,"
-                          "N");
+                          "N,D_chord,D_kappa");
   ASSERT_EQ(c.rows.size(), 6u);
   for (std::size_t i = 0; i < 6; ++i) {
     const auto& row = c.rows[i];
@@ -317,12 +326,11 @@ TEST_F(Analyze, ExponentsRecoverSyntheticPowerLaws) {
 TEST_F(Analyze, SeriesAreSeedMeansWithPurohitPredictions) {
   analyze();
   const Csv c = read_csv(out("series.csv"));
-  EXPECT_EQ(
-      c.header,
-      "point," + kParams +
-          ",l,n,D_mean,D_sem,U_b_hat_mean,U_b_hat_sem,K_mean,K_sem,N_mean,N_sem,"
-          "R_t_mean,R_t_sem,R_x_mean,R_x_sem,R_y_mean,R_y_sem,S_kappa_mean,"
-          "S_kappa_sem,U_b_hat_purohit_mean,U_b_hat_purohit_sem,K_purohit_mean,K_purohit_sem");
+  EXPECT_EQ(c.header, "point," + kParams +
+                          ",l,n,D_mean,D_sem,U_b_hat_mean,U_b_hat_sem,K_mean,K_sem,N_mean,N_sem,"
+                          "R_t_mean,R_t_sem,R_x_mean,R_x_sem,R_y_mean,R_y_sem,S_kappa_mean,"
+                          "S_kappa_sem,D_chord_mean,D_chord_sem,U_b_hat_purohit_mean,U_b_hat_"
+                          "purohit_sem,K_purohit_mean,K_purohit_sem");
   ASSERT_EQ(c.rows.size(), 201u + 201u);
   const auto& row = c.rows[100];  // point 0, l = 10
   EXPECT_EQ(row.at("point"), "0");

@@ -42,6 +42,8 @@ RunData made_up_run(double mu_s, int seed, double d0) {
     r.series["R_x"].push_back(NaN);
     r.series["R_y"].push_back(NaN);
     r.series["S_kappa"].push_back(1 - d0 / l);
+    // D_chord rises then falls: its maximum in a window is not at the window's start.
+    r.series["D_chord"].push_back(l == 3 ? 0.9 : 0.1);
   }
   r.every_l = 1;
   return r;
@@ -82,6 +84,19 @@ TEST(Reductions, SummarizesOneRun) {
   EXPECT_DOUBLE_EQ(r.U_b_hat, 2 * std::pow(10.0, 1.5));
   EXPECT_DOUBLE_EQ(r.K, 10);
   EXPECT_DOUBLE_EQ(r.N, 100);
+  // The variants are maximised over the same window: D_chord peaks at l = 3; D_kappa =
+  // 1 - |S_kappa| = 0.6 / l is largest at l = 2.
+  EXPECT_DOUBLE_EQ(r.D_chord, 0.9);
+  EXPECT_DOUBLE_EQ(r.D_kappa, 0.3);
+  s.D_window = {4, 10};
+  RunData outside = made_up_run(0, 1, 0.6);
+  summarize_run(outside, s);
+  EXPECT_DOUBLE_EQ(outside.D_chord, 0.1);
+  // A run file from before the series: no D_chord column, NaN.
+  RunData old = made_up_run(0, 1, 0.6);
+  old.series.erase("D_chord");
+  summarize_run(old, s);
+  EXPECT_TRUE(std::isnan(old.D_chord));
   ASSERT_EQ(r.series.at("U_b_hat_purohit").size(), 10u);
   EXPECT_TRUE(std::isnan(r.series.at("U_b_hat_purohit")[0]));
 }

@@ -44,8 +44,8 @@ TEST(SeriesList, ColumnsAndFlags) {
     EXPECT_TRUE(s.compute) << s.name;
   }
   // series.csv and accuracy.csv columns, in their order (tests/golden keeps their bytes).
-  EXPECT_EQ(kept_series(),
-            (std::vector<std::string>{"D", "U_b_hat", "K", "N", "R_t", "R_x", "R_y", "S_kappa"}));
+  EXPECT_EQ(kept_series(), (std::vector<std::string>{"D", "U_b_hat", "K", "N", "R_t", "R_x", "R_y",
+                                                     "S_kappa", "D_chord"}));
   EXPECT_EQ(sweep::accuracy_series(), (std::vector<std::string>{"U_b_hat", "K", "N"}));
 }
 

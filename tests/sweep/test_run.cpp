@@ -10,6 +10,7 @@
 
 #include "analysis/observables.hpp"
 #include "sweep/temp_dir.hpp"
+#include "sweep/wire_profile.hpp"
 
 namespace wirepack::sweep {
 namespace {
@@ -30,8 +31,8 @@ Scene short_rigid(double l_max) {
 
 TEST(Run, SeriesNames) {
   const std::vector<std::string> expected = {
-      "l", "U_b_hat", "U_b", "U_t", "U_s", "U_m", "U_sb",   "E_kin", "K",      "N",
-      "S", "D",       "R_t", "R_x", "R_y", "dt",  "wall_s", "steps", "S_kappa"};
+      "l", "U_b_hat", "U_b", "U_t", "U_s", "U_m",    "U_sb",  "E_kin",   "K",       "N",    "S",
+      "D", "R_t",     "R_x", "R_y", "dt",  "wall_s", "steps", "S_kappa", "D_chord", "chord"};
   EXPECT_EQ(series_names(), expected);
 }
 
@@ -92,6 +93,11 @@ TEST(Run, ShortRigidRun) {
   std::vector<Vec3> wire;
   for (const auto& x : last.wire) wire.emplace_back(x[0], x[1], x[2]);
   EXPECT_EQ(r.find_series("S_kappa")->values.back(), analysis::curvature_weighted_order(wire).S);
+  // And D_chord and the chord's length are those of the same wire in the rigid sphere.
+  const OrderVariants o = order_variants(wire, scene.engine, {}, {});
+  EXPECT_EQ(r.find_series("D_chord")->values.back(), o.D_chord);
+  EXPECT_NEAR(r.find_series("chord")->values.back(), o.chord_length_R, 1e-12);
+  for (double x : r.find_series("D_chord")->values) EXPECT_TRUE(x >= 0 && x <= 1) << x;
 }
 
 TEST(Run, FailedRunStillWritesFile) {
