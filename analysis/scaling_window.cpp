@@ -87,9 +87,9 @@ void log_resample(std::span<const double> l, std::span<const double> y, double l
   y_out.clear();
   if (counts) counts->clear();
   const std::size_t n = std::min(l.size(), y.size());
-  double l0 = NaN;
-  for (std::size_t i = 0; i < n && std::isnan(l0); ++i)
-    if (usable(l[i], y[i], l_end)) l0 = l[i];
+  double l0 = NaN;  // the smallest usable l (points may come in any order, e.g. pooled seeds)
+  for (std::size_t i = 0; i < n; ++i)
+    if (usable(l[i], y[i], l_end) && !(l[i] >= l0)) l0 = l[i];
   if (std::isnan(l0) || !(points_per_decade > 0)) return;
   // Bin k holds log10(l / l0) in [k, k + 1) / points_per_decade; sums of ln l, ln y per bin.
   std::vector<double> su, sv;
@@ -112,6 +112,21 @@ void log_resample(std::span<const double> l, std::span<const double> y, double l
     y_out.push_back(std::exp(sv[k] / count[k]));
     if (counts) counts->push_back(count[k]);
   }
+}
+
+PowerLawFit fit_power_law_log_spaced(std::span<const double> l, std::span<const double> y,
+                                     double l_min, double l_max, double points_per_decade) {
+  std::vector<double> lw, yw;
+  for (std::size_t i = 0; i < std::min(l.size(), y.size()); ++i)
+    if (l[i] >= l_min) {
+      lw.push_back(l[i]);
+      yw.push_back(y[i]);
+    }
+  std::vector<double> L, Y;
+  std::vector<int> C;
+  log_resample(lw, yw, l_max, points_per_decade, L, Y, &C);
+  if (L.size() < 3) return PowerLawFit{};
+  return wls_fit(L, Y, C, 0, L.size() - 1);
 }
 
 ScalingWindow find_scaling_window(std::span<const double> l, std::span<const double> y,

@@ -41,12 +41,18 @@ struct ScalingWindow {
   bool ok = false;                   // a window of at least min_decades was found
 };
 
-// Log-spaced resampling (step 1): bins [l0 10^(k/ppd), l0 10^((k+1)/ppd)) from the first usable
-// point l0 (l > 0, y > 0, both finite, l <= l_end); returns the bins' geometric-mean l and y
-// (empty bins skipped), in increasing l, and, if counts is given, the rows in each bin.
+// Log-spaced resampling (step 1): bins [l0 10^(k/ppd), l0 10^((k+1)/ppd)) from the smallest
+// usable l0 (points in any order) (l > 0, y > 0, both finite, l <= l_end); returns the bins'
+// geometric-mean l and y (empty bins skipped), in increasing l, and, if counts is given, the rows
+// in each bin.
 void log_resample(std::span<const double> l, std::span<const double> y, double l_end,
                   double points_per_decade, std::vector<double>& l_out, std::vector<double>& y_out,
                   std::vector<int>* counts = nullptr);
+
+// Least squares of ln y on ln l over the log-spaced resampling (step 1) of the points with
+// l_min <= l <= l_max, weighted by rows per bin; standard errors from the weighted residuals.
+PowerLawFit fit_power_law_log_spaced(std::span<const double> l, std::span<const double> y,
+                                     double l_min, double l_max, double points_per_decade = 20);
 
 // The window of the rule above for the series (l, y) (l increasing) cut at l_end.
 ScalingWindow find_scaling_window(std::span<const double> l, std::span<const double> y,

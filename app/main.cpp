@@ -175,7 +175,14 @@ int cmd_analyze(const AnalyzeOptions& opt) {
   }
   const auto& w = r.settings.D_window;
   std::cerr << "; D window [" << format_number(w.l_min) << ", " << format_number(w.l_max)
-            << "], distributions at l = " << format_number(r.distribution_l) << '\n';
+            << "], distributions at l = " << format_number(r.distribution_l);
+  if (r.settings.order_parameter != "D")
+    std::cerr << ", critical points of " << r.settings.order_parameter;
+  if (!r.settings.fit_auto.empty()) {
+    std::cerr << ", scaling windows by rule:";
+    for (const auto& e : r.settings.fit_auto) std::cerr << ' ' << e;
+  }
+  std::cerr << '\n';
   constexpr std::size_t kListed = 20;
   for (std::size_t i = 0; i < r.skipped.size() && i < kListed; ++i)
     std::cerr << "  skipped (" << r.skipped[i].status << "): " << r.skipped[i].file
@@ -318,6 +325,15 @@ int main(int argc, char** argv) {
                    "NAME=X_MIN,X_MAX: fit the critical point of NAME (mu_s, eps, xi, rho) on the "
                    "grid values inside only, e.g. mu_s=0,0.6; repeatable")
       ->allow_extra_args(false);
+  analyze
+      ->add_option("--fit-auto", analyze_opt.fit_auto,
+                   "all or NAME (alpha, ... tau): start that exponent's window where the "
+                   "scaling-window rule says (inside its fit window) and fit log-spaced points; "
+                   "repeatable")
+      ->allow_extra_args(false);
+  analyze->add_option("--order-parameter", analyze_opt.order_parameter,
+                      "D (the paper's, default), D_chord or D_kappa: the order parameter of the "
+                      "critical points and the phase diagram");
   analyze->add_flag("--no-plots", no_plots, "write the gnuplot scripts but do not run gnuplot");
 
   RefineOptions refine_opt;

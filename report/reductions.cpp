@@ -4,10 +4,12 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <random>
 #include <set>
 #include <stdexcept>
 
 #include "analysis/purohit.hpp"
+#include "analysis/scaling_window.hpp"
 #include "report/csv_table.hpp"
 #include "sweep/sweep_config.hpp"
 
@@ -230,6 +232,12 @@ void group(Analysis& a, const std::optional<sweep::Sweep>& sweep) {
   for (const auto& ptr : a.params) a.param_names.push_back(column_name(ptr));
 }
 
+double RunData::*order_parameter_field(const std::string& name) {
+  if (name == "D_chord") return &RunData::D_chord;
+  if (name == "D_kappa") return &RunData::D_kappa;
+  return &RunData::D;
+}
+
 std::vector<double> values(const GridPoint& p, double RunData::*field) {
   std::vector<double> v;
   for (const RunData* r : p.complete) v.push_back(r->*field);
@@ -253,7 +261,7 @@ View make_view(const Analysis& a, const std::string& ptr) {
 }
 
 ExponentFit fit_exponent(const GridPoint& p, const std::string& series, const LWindow& w,
-                         int resamples) {
+                         int resamples, bool auto_window) {
   std::vector<std::vector<double>> ls, ys;
   std::vector<double> pooled_l, pooled_y;
   for (const RunData* r : p.complete) {
@@ -266,9 +274,38 @@ ExponentFit fit_exponent(const GridPoint& p, const std::string& series, const LW
   }
   ExponentFit f;
   f.seeds = p.complete.size();
-  f.fit = analysis::fit_power_law(pooled_l, pooled_y, w.l_min, w.l_max);
-  if (f.fit.ok && f.seeds >= 2 && resamples >= 2)
-    f.stderr_bootstrap = analysis::bootstrap_exponent_stderr(ls, ys, w.l_min, w.l_max, resamples);
+  if (!auto_window) {
+    f.fit = analysis::fit_power_law(pooled_l, pooled_y, w.l_min, w.l_max);
+    if (f.fit.ok && f.seeds >= 2 && resamples >= 2)
+      f.stderr_bootstrap = analysis::bootstrap_exponent_stderr(ls, ys, w.l_min, w.l_max, resamples);
+    return f;
+  }
+  f.auto_window = true;
+  std::vector<double> in_l, in_y;
+  for (std::size_t i = 0; i < pooled_l.size(); ++i)
+    if (pooled_l[i] >= w.l_min) {
+      in_l.push_back(pooled_l[i]);
+      in_y.push_back(pooled_y[i]);
+    }
+  const analysis::ScalingWindow sw = analysis::find_scaling_window(in_l, in_y, w.l_max);
+  if (!sw.ok) return f;  // no scaling window: fit.ok = false
+  f.fit = analysis::fit_power_law_log_spaced(pooled_l, pooled_y, sw.l_start, w.l_max);
+  if (!f.fit.ok || f.seeds < 2 || resamples < 2) return f;
+  // Seed bootstrap of the same window (fixed RNG seed, as bootstrap_exponent_stderr).
+  std::mt19937_64 rng(20150101);
+  std::uniform_int_distribution<std::size_t> pick(0, f.seeds - 1);
+  std::vector<double> exponents;
+  for (int b = 0; b < resamples; ++b) {
+    std::vector<double> bl, by;
+    for (std::size_t k = 0; k < f.seeds; ++k) {
+      const std::size_t s = pick(rng);
+      bl.insert(bl.end(), ls[s].begin(), ls[s].end());
+      by.insert(by.end(), ys[s].begin(), ys[s].end());
+    }
+    const auto g = analysis::fit_power_law_log_spaced(bl, by, sw.l_start, w.l_max);
+    if (g.ok) exponents.push_back(g.exponent);
+  }
+  if (exponents.size() >= 2) f.stderr_bootstrap = analysis::mean_sem(exponents).sd;
   return f;
 }
 
@@ -284,7 +321,8 @@ Fits fit_all(const Analysis& a) {
   for (std::size_t i = 0; i < a.points.size(); ++i)
     for (const auto& e : exponent_specs())
       fits[i].push_back(fit_exponent(a.points[i], e.series, a.settings.fit_windows.at(e.name),
-                                     a.settings.bootstrap_resamples));
+                                     a.settings.bootstrap_resamples,
+                                     a.settings.fit_auto.count(e.name) > 0));
   return fits;
 }
 
@@ -366,7 +404,7 @@ std::vector<CriticalPoint> critical_points(const Analysis& a) {
   for (const auto& p : a.points) {
     CriticalPoint c;
     for (const auto& ptr : a.axes) c.params[ptr] = leaf(p, ptr);
-    c.D = values(p, &RunData::D);
+    c.D = values(p, order_parameter_field(a.settings.order_parameter));
     c.failed = p.failed;
     c.missing = p.missing;
     out.push_back(std::move(c));

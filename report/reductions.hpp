@@ -109,6 +109,8 @@ struct Analysis {
 void group(Analysis& a, const std::optional<sweep::Sweep>& sweep);
 
 // A run quantity over the complete runs of a point, in seed order.
+// The RunData field of an order parameter name (settings.hpp: is_order_parameter); D otherwise.
+double RunData::*order_parameter_field(const std::string& name);
 std::vector<double> values(const GridPoint& p, double RunData::*field);
 
 // D against one swept parameter: the other swept parameters first, sorted by them, then by it.
@@ -125,9 +127,14 @@ struct ExponentFit {
   analysis::PowerLawFit fit;
   double stderr_bootstrap = NaN;
   std::size_t seeds = 0;
+  bool auto_window = false;  // window start by the scaling-window rule, log-spaced fit
 };
+// The power law of `series` over the pooled rows of p's complete runs in w (OLS of every row),
+// or with auto_window: from where analysis::find_scaling_window's rule starts the scaling
+// window inside w (on the pooled seeds), fitted over log-spaced points
+// (analysis::fit_power_law_log_spaced); the bootstrap over seeds refits the same window.
 ExponentFit fit_exponent(const GridPoint& p, const std::string& series, const LWindow& w,
-                         int resamples);
+                         int resamples, bool auto_window = false);
 // The reported standard error is the seed bootstrap's from 3 seeds on, else the OLS one.
 bool use_bootstrap(const ExponentFit& f);
 double reported_stderr(const ExponentFit& f);

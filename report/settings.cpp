@@ -23,6 +23,10 @@ const std::vector<ExponentSpec>& exponent_specs() {
   return specs;
 }
 
+bool is_order_parameter(const std::string& name) {
+  return name == "D" || name == "D_chord" || name == "D_kappa";
+}
+
 AnalysisSettings default_analysis_settings() {
   AnalysisSettings s;
   for (const auto& e : exponent_specs()) s.fit_windows[e.name] = LWindow{};
@@ -102,8 +106,9 @@ void apply_analysis_block(const json& block, const std::string& source, const st
                      got_text(got) + ")");
   };
   static const std::vector<std::string> keys = {
-      "D_window",       "fit_window",          "fit_windows",    "distribution_l",
-      "histogram_bins", "bootstrap_resamples", "critical_ranges"};
+      "D_window",        "fit_window",     "fit_windows",
+      "distribution_l",  "histogram_bins", "bootstrap_resamples",
+      "critical_ranges", "fit_auto",       "order_parameter"};
   for (const auto& [key, value] : block.items()) {
     if (std::find(keys.begin(), keys.end(), key) != keys.end()) continue;
     std::string valid;
@@ -184,6 +189,27 @@ void apply_analysis_block(const json& block, const std::string& source, const st
       }
     }
   }
+  if (const auto it = block.find("fit_auto"); it != block.end()) {
+    if (it->is_boolean()) {
+      s.fit_auto.clear();
+      if (it->get<bool>())
+        for (const auto& e : exponent_specs()) s.fit_auto.insert(e.name);
+    } else if (it->is_array() && std::all_of(it->begin(), it->end(), [](const json& v) {
+                 return v.is_string() && is_exponent(v.get<std::string>());
+               })) {
+      s.fit_auto.clear();
+      for (const auto& v : *it) s.fit_auto.insert(v.get<std::string>());
+    } else {
+      fail("fit_auto", "must be true, false or a list of exponents (" + exponent_names() + ")",
+           *it);
+    }
+  }
+  if (const auto it = block.find("order_parameter"); it != block.end()) {
+    if (it->is_string() && is_order_parameter(it->get<std::string>()))
+      s.order_parameter = it->get<std::string>();
+    else
+      fail("order_parameter", "must be one of \"D\", \"D_chord\", \"D_kappa\"", *it);
+  }
   if (!errors.empty()) throw InputError(errors);
 }
 
@@ -234,6 +260,22 @@ void apply_flags(const AnalyzeOptions& o, AnalysisSettings& s) {
           "X_MIN < X_MAX, e.g. mu_s=0,0.6 (got \"" +
           text + "\")");
     s.critical_ranges["/" + name] = {*a, *b};
+  }
+  for (const auto& name : o.fit_auto) {
+    if (name == "all") {
+      for (const auto& e : exponent_specs()) s.fit_auto.insert(e.name);
+    } else if (is_exponent(name)) {
+      s.fit_auto.insert(name);
+    } else {
+      throw InputError("--fit-auto: must be all or an exponent (" + exponent_names() + ") (got \"" +
+                       name + "\")");
+    }
+  }
+  if (o.order_parameter) {
+    if (!is_order_parameter(*o.order_parameter))
+      throw InputError("--order-parameter: must be one of D, D_chord, D_kappa (got \"" +
+                       *o.order_parameter + "\")");
+    s.order_parameter = *o.order_parameter;
   }
 }
 

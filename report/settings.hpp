@@ -4,6 +4,7 @@
 // command line.
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -37,21 +38,31 @@ const std::vector<ExponentSpec>& exponent_specs();
 struct AnalysisSettings {
   LWindow D_window;                            // D maximised and averaged over it
   std::map<std::string, LWindow> fit_windows;  // one per exponent name (all six present)
-  std::optional<double> distribution_l;        // none: the last snapshot common to the runs
-  int histogram_bins = 30;                     // bins of each distribution histogram
-  int bootstrap_resamples = 1000;              // seed-bootstrap resamples (< 2: no bootstrap)
+  // Exponents whose window starts where analysis::find_scaling_window's rule says, inside
+  // their fit window, fitted over log-spaced points (docs/design.md §5.8).
+  std::set<std::string> fit_auto;
+  // The order parameter of the critical points and the phase diagram: "D" (the paper's,
+  // literal), "D_chord" or "D_kappa" (docs/design.md §5.3). The D tables carry all three.
+  std::string order_parameter = "D";
+  std::optional<double> distribution_l;  // none: the last snapshot common to the runs
+  int histogram_bins = 30;               // bins of each distribution histogram
+  int bootstrap_resamples = 1000;        // seed-bootstrap resamples (< 2: no bootstrap)
   // Ranges of the critical-point fits: parameter pointer ("/mu_s") -> [x_min, x_max]; grid
   // values outside are left out of that parameter's fits (e.g. a falling tail of D).
   std::map<std::string, std::pair<double, double>> critical_ranges;
 };
 
+// "D", "D_chord" or "D_kappa": the order parameters the analysis reduces (docs/design.md §5.3).
+bool is_order_parameter(const std::string& name);
+
 // Defaults: every window [5, 50], distribution at the last common snapshot, 30 bins, 1000
 // resamples.
 AnalysisSettings default_analysis_settings();
 
-// Applies an `analysis` block (keys D_window, fit_window, fit_windows, distribution_l,
-// histogram_bins, bootstrap_resamples; see the README) onto `s`. `source` and `pointer` (the
-// block's JSON pointer in that file) name it in messages: `SOURCE: POINTER/D_window: rule (got
+// Applies an `analysis` block (keys D_window, fit_window, fit_windows, fit_auto, distribution_l,
+// histogram_bins, bootstrap_resamples, critical_ranges, order_parameter; see the README) onto `s`.
+// `source` and `pointer` (the block's JSON pointer in that file) name it in messages: `SOURCE:
+// POINTER/D_window: rule (got
 // ...)`. Throws InputError listing every problem; unknown keys are errors.
 void apply_analysis_block(const nlohmann::json& block, const std::string& source,
                           const std::string& pointer, AnalysisSettings& s);
@@ -66,7 +77,9 @@ struct AnalyzeOptions {
   std::optional<int> bins;                   // histogram bins
   std::optional<int> resamples;              // bootstrap resamples
   std::vector<std::string> critical_ranges;  // "NAME=X_MIN,X_MAX" (mu_s, eps, xi, rho)
-  std::string gnuplot = "gnuplot";           // plotting program (PATH is searched); "" = no plots
+  std::vector<std::string> fit_auto;         // "all" or exponent names
+  std::optional<std::string> order_parameter;  // D, D_chord, D_kappa
+  std::string gnuplot = "gnuplot";             // plotting program (PATH is searched); "" = no plots
   // The recorded series (docs/design.md §5.7); the analysis keeps those with an analysis_rank.
   sweep::SeriesList series = sweep::recorded_series();
 };

@@ -123,7 +123,8 @@ std::string exponents_csv(const Analysis& a, const Fits& fits) {
                     num(f.fit.stderr_), num(f.stderr_bootstrap), num(f.fit.log_prefactor),
                     num(w.l_min), num(w.l_max), num(f.fit.l_min), num(f.fit.l_max),
                     std::to_string(f.fit.n_points), std::to_string(f.seeds),
-                    boot ? "ols+bootstrap" : "ols", f.fit.ok ? "true" : "false"}));
+                    std::string(f.auto_window ? "auto-log" : "ols") + (boot ? "+bootstrap" : ""),
+                    f.fit.ok ? "true" : "false"}));
     }
   }
   return t.text();

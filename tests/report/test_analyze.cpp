@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <map>
 #include <numbers>
+#include <set>
 #include <sstream>
 
 #include <gtest/gtest.h>
@@ -508,7 +509,8 @@ TEST_F(Analyze, BadInputIsAnInputErrorAndWritesNothing) {
     EXPECT_EQ(e.messages()[0], other / "manifest.json" +
                                    ": /sweep/analysis/bins: unknown key; valid keys: D_window, "
                                    "fit_window, fit_windows, distribution_l, histogram_bins, "
-                                   "bootstrap_resamples, critical_ranges");
+                                   "bootstrap_resamples, critical_ranges, fit_auto, "
+                                   "order_parameter");
     EXPECT_EQ(e.messages()[1], other / "manifest.json" +
                                    ": /sweep/analysis/D_window: must be [l_min, l_max] with 0 <= "
                                    "l_min < l_max (got [50,5])");
@@ -539,6 +541,29 @@ TEST(AnalysisBlock, DefaultsAndEveryKey) {
                        "s.json", "/analysis", s);
   EXPECT_EQ(s.critical_ranges.at("/mu_s"), (std::pair<double, double>{0, 0.6}));
   EXPECT_EQ(s.critical_ranges.at("/eps").second, 1e4);
+  // fit_auto: true (every exponent), a list, or false; order_parameter: D, D_chord, D_kappa.
+  EXPECT_TRUE(s.fit_auto.empty());
+  EXPECT_EQ(s.order_parameter, "D");
+  apply_analysis_block(json::parse(R"({"fit_auto": true, "order_parameter": "D_chord"})"), "s.json",
+                       "/analysis", s);
+  EXPECT_EQ(s.fit_auto.size(), 6u);
+  EXPECT_EQ(s.order_parameter, "D_chord");
+  apply_analysis_block(json::parse(R"({"fit_auto": ["delta", "tau"]})"), "s.json", "/analysis", s);
+  EXPECT_EQ(s.fit_auto, (std::set<std::string>{"delta", "tau"}));
+  try {
+    apply_analysis_block(json::parse(R"({"fit_auto": ["zeta"], "order_parameter": "S"})"), "s.json",
+                         "/analysis", s);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    ASSERT_EQ(e.messages().size(), 2u);
+    EXPECT_EQ(e.messages()[0],
+              "s.json: /analysis/fit_auto: must be true, false or a list of exponents (alpha, "
+              "beta, gamma, delta, lambda, tau) (got [\"zeta\"])");
+    EXPECT_EQ(e.messages()[1],
+              "s.json: /analysis/order_parameter: must be one of \"D\", \"D_chord\", "
+              "\"D_kappa\" (got \"S\")");
+  }
+  EXPECT_EQ(s.order_parameter, "D_chord");  // a rejected block changes nothing it rejects
   try {
     apply_analysis_block(
         json::parse(R"({"critical_ranges": {"mu_d": [0, 1], "rho": [20, 10], "xi": 3}})"), "s.json",

@@ -130,6 +130,53 @@ TEST(Reductions, SeedMeansAndExponents) {
   EXPECT_EQ(values(a.points[0], &RunData::D), (std::vector<double>{0.2 / 5, 0.6 / 5}));
 }
 
+// With the scaling-window rule the window starts after a crossover and the fit is over log-spaced
+// points: U_b_hat ~ l^0.3 up to l = 8, ~ l^1.2 after (continuous), rows every 0.05 to l = 100;
+// the fixed window [2, 100] mixes the two laws.
+TEST(Reductions, AutoWindowStartsAfterTheCrossover) {
+  GridPoint p;
+  std::vector<RunData> runs(3);
+  for (std::size_t s = 0; s < runs.size(); ++s) {
+    RunData& r = runs[s];
+    const double a = 1 + 0.05 * static_cast<double>(s);  // seeds differ in prefactor only
+    for (int i = 20; i <= 2000; ++i) {
+      const double l = 0.05 * i;
+      r.series["l"].push_back(l);
+      r.series["U_b_hat"].push_back(
+          a * (l < 8 ? std::pow(l, 0.3) : std::pow(8, 0.3) * std::pow(l / 8, 1.2)));
+    }
+    p.complete.push_back(&r);
+  }
+  const LWindow w{2, 100};
+  const ExponentFit fixed = fit_exponent(p, "U_b_hat", w, 0);
+  ASSERT_TRUE(fixed.fit.ok);
+  EXPECT_LT(fixed.fit.exponent, 1.1);  // the crossover drags the fixed window's fit down
+  const ExponentFit automatic = fit_exponent(p, "U_b_hat", w, 200, true);
+  ASSERT_TRUE(automatic.fit.ok);
+  EXPECT_TRUE(automatic.auto_window);
+  EXPECT_GE(automatic.fit.l_min, 8 * std::pow(10, -0.05));
+  EXPECT_LE(automatic.fit.l_min, 8 * std::pow(10, 0.3));
+  // The seeds' prefactors differ by a constant factor in ln y: the pooled geometric means lie on
+  // the law, and every bootstrap draw gives nearly the same exponent.
+  EXPECT_NEAR(automatic.fit.exponent, 1.2, 0.02);
+  EXPECT_LT(automatic.stderr_bootstrap, 0.02);
+}
+
+// The critical points see the order parameter the settings name.
+TEST(Reductions, CriticalPointsUseTheChosenOrderParameter) {
+  Analysis a;
+  a.settings = default_analysis_settings();
+  a.settings.D_window = {2, 4};  // D_chord peaks at 0.9 at l = 3
+  a.runs = {made_up_run(0, 1, 0.6)};
+  for (auto& r : a.runs) summarize_run(r, a.settings);
+  group(a, std::nullopt);
+  EXPECT_EQ(critical_points(a).at(0).D, (std::vector<double>{0.3}));
+  a.settings.order_parameter = "D_chord";
+  EXPECT_EQ(critical_points(a).at(0).D, (std::vector<double>{0.9}));
+  a.settings.order_parameter = "D_kappa";
+  EXPECT_EQ(critical_points(a).at(0).D, values(a.points[0], &RunData::D_kappa));
+}
+
 // The tables come from the in-memory analysis alone: one runs.csv row per run, one curves.csv
 // row per point.
 TEST(Reductions, TablesFromMemory) {
