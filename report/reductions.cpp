@@ -396,6 +396,7 @@ Distribution distribution(const std::string& quantity, const std::vector<double>
   d.hist = analysis::histogram(logs, d.fit.mu - 4 * d.fit.sigma, d.fit.mu + 4 * d.fit.sigma, bins);
   for (std::size_t b = 0; b < d.hist.lo.size(); ++b)
     d.fit_density.push_back(normal_pdf((d.hist.lo[b] + d.hist.hi[b]) / 2, d.fit.mu, d.fit.sigma));
+  d.ls_fit = analysis::fit_normal_to_histogram(d.hist);
   return d;
 }
 

@@ -159,6 +159,9 @@ struct Samples {
   std::vector<double> kappa2;  // kappa^2 / <kappa^2>, pooled over the runs
   std::vector<double> loops;   // Lambda / r, pooled
   std::size_t runs = 0;        // runs with a snapshot at l
+  // The loop parameters over the detector's settings (smoothing 1, 2, 4 r x prominence 0.1,
+  // 0.25, 0.5), the runs' wires pooled (analysis::loop_sensitivity).
+  std::vector<analysis::LoopSensitivityRow> loop_sensitivity;
   // The packing of the first of those runs: its wire and shell vertices (none if rigid) at l
   // [m], the cavity radius R [m].
   std::vector<std::array<double, 3>> wire, shell;
@@ -174,6 +177,8 @@ struct Distribution {
   analysis::LognormalFit fit;
   analysis::Histogram hist;  // of ln x
   std::vector<double> fit_density;
+  // The paper's "best-fitting density": the normal density least-squares fitted to hist.
+  analysis::HistogramNormalFit ls_fit;
 };
 Distribution distribution(const std::string& quantity, const std::vector<double>& xs, int bins);
 

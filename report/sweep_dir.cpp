@@ -153,6 +153,8 @@ std::vector<Samples> distribution_samples(const fs::path& dir, const Analysis& a
   std::vector<Samples> out(a.points.size());
   if (!std::isfinite(a.distribution_l)) return out;
   for (std::size_t i = 0; i < a.points.size(); ++i) {
+    std::vector<std::vector<analysis::Vec3>> wires;
+    double loop_r = NaN;
     for (const RunData* r : a.points[i].complete) {
       const auto k = snapshot_near(r->snapshot_l, a.distribution_l);
       if (!k) continue;
@@ -175,9 +177,16 @@ std::vector<Samples> distribution_samples(const fs::path& dir, const Analysis& a
       ++s.runs;
       const auto k2 = analysis::normalized_squared_curvature(x);
       s.kappa2.insert(s.kappa2.end(), k2.begin(), k2.end());
-      if (std::isfinite(wire_r) && wire_r > 0)
+      if (std::isfinite(wire_r) && wire_r > 0) {
         for (const double lambda : analysis::loop_lengths(x, wire_r))
           s.loops.push_back(lambda / wire_r);
+        loop_r = wire_r;
+        wires.push_back(std::move(x));
+      }
+    }
+    if (!wires.empty()) {
+      static const std::vector<double> smoothings{1, 2, 4}, prominences{0.1, 0.25, 0.5};
+      out[i].loop_sensitivity = analysis::loop_sensitivity(wires, loop_r, smoothings, prominences);
     }
   }
   return out;

@@ -161,7 +161,7 @@ std::string distributions_csv(const Analysis& a, const std::vector<Samples>& sam
   Table t(cat(std::vector<std::string>{"point"}, a.param_names,
               std::vector<std::string>{"quantity", "l", "n_runs", "n", "mu", "mu_stderr", "sigma",
                                        "sigma_stderr", "ok", "bin", "ln_lo", "ln_hi", "count",
-                                       "density", "fit_density"}));
+                                       "density", "fit_density", "mu_ls", "sigma_ls", "ls_ok"}));
   for (std::size_t i = 0; i < a.points.size(); ++i) {
     const auto params = param_cells(a, a.points[i]);
     for (const Distribution& d : ds[i]) {
@@ -175,15 +175,35 @@ std::string distributions_csv(const Analysis& a, const std::vector<Samples>& sam
                                             num(d.fit.sigma_stderr),
                                             d.fit.ok ? "true" : "false"};
       const auto head = cat(std::vector<std::string>{std::to_string(i)}, params, fit);
+      const std::vector<std::string> ls = {num(d.ls_fit.mu), num(d.ls_fit.sigma),
+                                           d.ls_fit.ok ? "true" : "false"};
       if (d.hist.lo.empty()) {
-        t.add(cat(head, std::vector<std::string>{"", "nan", "nan", "0", "nan", "nan"}));
+        t.add(cat(head, std::vector<std::string>{"", "nan", "nan", "0", "nan", "nan"}, ls));
         continue;
       }
       for (std::size_t b = 0; b < d.hist.lo.size(); ++b)
-        t.add(cat(head, std::vector<std::string>{std::to_string(b), num(d.hist.lo[b]),
-                                                 num(d.hist.hi[b]), std::to_string(d.hist.count[b]),
-                                                 num(d.hist.density[b]), num(d.fit_density[b])}));
+        t.add(cat(head,
+                  std::vector<std::string>{std::to_string(b), num(d.hist.lo[b]), num(d.hist.hi[b]),
+                                           std::to_string(d.hist.count[b]), num(d.hist.density[b]),
+                                           num(d.fit_density[b])},
+                  ls));
     }
+  }
+  return t.text();
+}
+
+std::string loop_sensitivity_csv(const Analysis& a, const std::vector<Samples>& samples) {
+  Table t(cat(std::vector<std::string>{"point"}, a.param_names,
+              std::vector<std::string>{"l", "n_runs", "smoothing_r", "min_prominence", "loops",
+                                       "mu", "mu_stderr", "sigma", "sigma_stderr", "ok"}));
+  for (std::size_t i = 0; i < a.points.size(); ++i) {
+    for (const auto& row : samples[i].loop_sensitivity)
+      t.add(cat(std::vector<std::string>{std::to_string(i)}, param_cells(a, a.points[i]),
+                std::vector<std::string>{
+                    num(a.distribution_l), std::to_string(samples[i].runs), num(row.smoothing_r),
+                    num(row.min_prominence), std::to_string(row.loops), num(row.fit.mu),
+                    num(row.fit.mu_stderr), num(row.fit.sigma), num(row.fit.sigma_stderr),
+                    row.fit.ok ? "true" : "false"}));
   }
   return t.text();
 }

@@ -16,5 +16,7 @@ std::string exponents_csv(const Analysis& a, const Fits& fits);
 std::string series_csv(const Analysis& a, const std::vector<MeanSeries>& ms);
 std::string distributions_csv(const Analysis& a, const std::vector<Samples>& samples,
                               const Distributions& ds);
+// loop_sensitivity.csv: per point, the loop parameters over the loop detector's settings.
+std::string loop_sensitivity_csv(const Analysis& a, const std::vector<Samples>& samples);
 
 }  // namespace wirepack::report

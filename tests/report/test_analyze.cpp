@@ -359,9 +359,13 @@ TEST_F(Analyze, DistributionsAtTheLastCommonSnapshot) {
   const Csv c = read_csv(out("distributions.csv"));
   EXPECT_EQ(c.header, "point," + kParams +
                           ",quantity,l,n_runs,n,mu,mu_stderr,sigma,sigma_stderr,ok,bin,ln_lo,"
-                          "ln_hi,count,density,fit_density");
+                          "ln_hi,count,density,fit_density,mu_ls,sigma_ls,ls_ok");
   ASSERT_EQ(c.rows.size(), 2u * 2u * 30u);  // points x quantities x bins
-  std::map<std::string, double> total;      // sum of density * width per (point, quantity)
+  // The least-squares fit to the histogram is analysis::fit_normal_to_histogram of the same bins
+  // (tested there); here: it ran, and it is near the MLE for these near-normal samples.
+  EXPECT_EQ(c.rows[0].at("ls_ok"), "true");
+  EXPECT_NEAR(d(c.rows[0].at("mu_ls")), d(c.rows[0].at("mu")), d(c.rows[0].at("sigma")));
+  std::map<std::string, double> total;  // sum of density * width per (point, quantity)
   for (const auto& row : c.rows) {
     EXPECT_EQ(row.at("l"), "20");
     EXPECT_EQ(row.at("ok"), "true");
@@ -379,6 +383,24 @@ TEST_F(Analyze, DistributionsAtTheLastCommonSnapshot) {
   o.bins = 5;
   EXPECT_EQ(analyze(o).distribution_l, 10);
   EXPECT_EQ(read_csv(out("distributions.csv")).rows.size(), 2u * 2u * 5u);
+
+  // loop_sensitivity.csv: 3 smoothings x 3 prominences per point, at the same l; the row at the
+  // detector's default (2 r, 0.25) is the distributions' loop fit.
+  const Csv ls = read_csv(out("loop_sensitivity.csv"));
+  EXPECT_EQ(ls.header, "point," + kParams +
+                           ",l,n_runs,smoothing_r,min_prominence,loops,mu,mu_stderr,sigma,"
+                           "sigma_stderr,ok");
+  ASSERT_EQ(ls.rows.size(), 2u * 9u);
+  const Csv dist = read_csv(out("distributions.csv"));
+  for (const auto& row : ls.rows) {
+    EXPECT_EQ(row.at("l"), "10");
+    if (row.at("smoothing_r") != "2" || row.at("min_prominence") != "0.25") continue;
+    for (const auto& drow : dist.rows)
+      if (drow.at("point") == row.at("point") && drow.at("quantity") == "Lambda_over_r") {
+        EXPECT_EQ(drow.at("mu"), row.at("mu"));
+        EXPECT_EQ(drow.at("n"), row.at("loops"));
+      }
+  }
 }
 
 TEST_F(Analyze, FlagsOverrideTheAnalysisBlock) {
@@ -404,9 +426,9 @@ TEST_F(Analyze, FullRunWritesEveryFileWithOneHeaderRowDeterministically) {
   AnalyzeOptions o;
   o.gnuplot = "gnuplot-that-does-not-exist";
   const AnalyzeResult r = analyze(o);
-  const std::vector<std::string> names = {"runs.csv",      "curves.csv", "D_vs_mu_s.csv",
-                                          "exponents.csv", "series.csv", "distributions.csv",
-                                          "critical.csv"};
+  const std::vector<std::string> names = {
+      "runs.csv",   "curves.csv",        "D_vs_mu_s.csv",        "exponents.csv",
+      "series.csv", "distributions.csv", "loop_sensitivity.csv", "critical.csv"};
   ASSERT_EQ(r.csv.size(), names.size());
   // Two values of mu_s: a row that says so, no number that looks like a result.
   const Csv crit = read_csv(out("critical.csv"));
