@@ -21,7 +21,8 @@ lookup() {
       } else {
         split(want, q, ":")
         if ($c["quantity"] == q[1] && $c["ok"] == "true") {
-          print $c[q[2]], $c[q[2] "_stderr"]; found = 1; exit
+          se = (q[2] "_stderr") in c ? $c[q[2] "_stderr"] : "nan"
+          print $c[q[2]], se; found = 1; exit
         }
       }
     }
@@ -60,6 +61,10 @@ table=$(
   row "σ of ln(κ²/⟨κ²⟩) (Fig. 6a)" 0.83 "" "$(lookup 0.5 kappa2:sigma "$di")"
   row "mean of ln(Λ/r), crumpled (Fig. 6b)" 3.0 "" "$(lookup 0.5 Lambda_over_r:mu "$di")"
   row "σ of ln(Λ/r) (Fig. 6b)" 0.48 "" "$(lookup 0.5 Lambda_over_r:sigma "$di")"
+  row "mean of ln(κ²/⟨κ²⟩), least squares to the histogram" -0.29 "" "$(lookup 0.5 kappa2:mu_ls "$di")"
+  row "σ of ln(κ²/⟨κ²⟩), least squares" 0.83 "" "$(lookup 0.5 kappa2:sigma_ls "$di")"
+  row "mean of ln(Λ/r), least squares" 3.0 "" "$(lookup 0.5 Lambda_over_r:mu_ls "$di")"
+  row "σ of ln(Λ/r), least squares" 0.48 "" "$(lookup 0.5 Lambda_over_r:sigma_ls "$di")"
 )
 echo "$table"
 readme=$here/README.md
