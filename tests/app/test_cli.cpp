@@ -166,6 +166,19 @@ TEST(Cli, ShortRunAndExport) {
                 0),
       0u);
   EXPECT_NE(read_text(dir / "run.xmf").find("run.h5:/snapshots/"), std::string::npos);
+
+  // --profile: the last snapshot by default; a snapshot that does not exist is bad input.
+  const Result p = wirepack(dir, "export run.h5 --profile profile.csv");
+  ASSERT_EQ(p.code, 0) << p.err;
+  const std::string profile = read_text(dir / "profile.csv");
+  EXPECT_NE(
+      profile.find("\nfrom_hole,s_R,kappa_R,kappa_n_R,shell_gap_r,self_contacts,in_chord\n0,0,"),
+      std::string::npos)
+      << profile;
+  const Result bad = wirepack(dir, "export run.h5 --profile p2.csv --snapshot 999");
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("no snapshot 999"), std::string::npos) << bad.err;
+  EXPECT_FALSE(fs::exists(dir / "p2.csv"));
 }
 
 TEST(Cli, FailedRunExit1) {
