@@ -6,6 +6,9 @@
 #                                                  1-2 first, then 3-5, then the rest, so that an
 #                                                  interrupted campaign still has whole curves
 #   bash results/paper/make.sh analyze [FIG...]    tables and plots from FIG/sweep into FIG/analysis
+#   bash results/paper/make.sh pictures FIG        every snapshot of FIG's runs drawn by wirepack
+#                                                  render (ParaView; wire at half its radius,
+#                                                  coloured by kappa R) into FIG/pictures
 # The run data (FIG/sweep: manifest.json, joblog.csv, runs/*.h5) are committed: whoever picks the
 # campaign up resumes it. A run is the unit of work: a killed run starts again from l = 0.
 set -euo pipefail
@@ -64,6 +67,20 @@ analyze() {  # FIG
   "$wp" analyze "$here/$f/sweep" --out "$here/$f/analysis"
 }
 
+pictures() {  # FIG
+  local f=$1
+  [ -d "$here/$f/sweep/runs" ] || { echo "== $f: no run data yet"; return 0; }
+  mkdir -p "$here/$f/pictures"
+  for run in "$here/$f"/sweep/runs/*.h5; do
+    local name n
+    name=$(basename "$run" .h5 | sed 's/_[0-9a-f]\{12\}$//')
+    n=$(h5ls "$run/snapshots" | wc -l)
+    for k in $(seq 0 $((n - 1))); do
+      "$wp" render "$run" --snapshot "$k" --half-radius --out "$here/$f/pictures/${name}_k$k.png"
+    done
+  done
+}
+
 cmd=${1:-status}
 case "$cmd" in
   status) status ;;
@@ -75,8 +92,12 @@ case "$cmd" in
     shift
     for f in "${@:-${figs[@]}}"; do analyze "$f"; done
     ;;
+  pictures)
+    [ $# -ge 2 ] || { echo "usage: make.sh pictures FIG" >&2; exit 2; }
+    pictures "$2"
+    ;;
   *)
-    echo "usage: make.sh status | run FIG [THREADS] | analyze [FIG...]" >&2
+    echo "usage: make.sh status | run FIG [THREADS] | analyze [FIG...] | pictures FIG" >&2
     exit 2
     ;;
 esac
