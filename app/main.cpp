@@ -64,14 +64,17 @@ void check_output_path(const std::string& out) {
     throw InputError(out + ": directory " + dir.string() + " is not writable");
 }
 
-int cmd_run(const std::string& scene_path, const std::string& out, int threads) {
+int cmd_run(const std::string& scene_path, const std::string& out, int threads,
+            double checkpoint_every) {
   const Scene scene = scene_path.empty()
                           ? parse_scene(default_scene_json(), "<embedded default scene>")
                           : load_scene(scene_path);
   check_output_path(out);
   RunOutcome outcome;
   try {
-    outcome = run_scene(scene, out, &std::cerr, [threads] { return threads; });
+    outcome = run_scene(
+        scene, out, &std::cerr, [threads] { return threads; }, recorded_series(),
+        CheckpointOptions{checkpoint_every});
   } catch (const RunFileError& e) {
     // The simulation ended but its file could not be written (a full disk, a size limit).
     std::cerr << "wirepack: run file not written: " << e.what() << '\n';
@@ -125,6 +128,7 @@ struct SweepArgs {
   int threads = 0;    // 0 = all cores
   std::string shard;  // "K/N"; "" = from SLURM_ARRAY_TASK_* or 0/1
   bool retry_failed = false;
+  double checkpoint_every = kDefaultCheckpointEvery;  // [s]
 };
 
 // docs/design.md §6.2: exit 0 when every run of the shard is complete, 1 when any failed (a summary
@@ -140,6 +144,7 @@ int cmd_sweep(const SweepArgs& a) {
   opt.threads = a.threads;
   opt.shard = shard;
   opt.retry_failed = a.retry_failed;
+  opt.checkpoint_every_s = a.checkpoint_every;
   opt.progress = &std::cerr;
   const SweepOutcome o = run_sweep(sweep, opt);
 
@@ -276,6 +281,12 @@ int main(int argc, char** argv) {
                   "threads of the force loops (default 1); the run file is bitwise the same "
                   "for any count")
       ->check(CLI::Range(1, 1024));
+  const std::string checkpoint_help =
+      "seconds of wall time between checkpoints (RUN.h5.ckpt; default 300, 0: none); a run "
+      "whose checkpoint exists resumes from it, bitwise the same as uninterrupted";
+  double run_checkpoint_every = kDefaultCheckpointEvery;
+  run->add_option("--checkpoint-every", run_checkpoint_every, checkpoint_help)
+      ->check(CLI::Range(0.0, 1e9));
   SweepArgs sweep_args;
   auto* sweep = app.add_subcommand(
       "sweep",
@@ -294,6 +305,8 @@ int main(int argc, char** argv) {
                     "from SLURM_ARRAY_TASK_ID and SLURM_ARRAY_TASK_COUNT, else 0/1)");
   sweep->add_flag("--retry-failed", sweep_args.retry_failed,
                   "run again the runs whose file says failed (kept otherwise)");
+  sweep->add_option("--checkpoint-every", sweep_args.checkpoint_every, checkpoint_help)
+      ->check(CLI::Range(0.0, 1e9));
 
   AnalyzeOptions analyze_opt;
   std::string d_window;
@@ -444,7 +457,7 @@ int main(int argc, char** argv) {
   if ((*run && run_threads > 1) || *sweep || *refine) spin_between_parallel_loops(argv);
 
   try {
-    if (*run) return cmd_run(scene_path, out_path, run_threads);
+    if (*run) return cmd_run(scene_path, out_path, run_threads, run_checkpoint_every);
     if (*sweep) return cmd_sweep(sweep_args);
     if (*validate) return cmd_validate(validate_path);
     if (*analyze) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <sstream>
 
 #include "engine/rod/frames.hpp"
 
@@ -67,6 +68,22 @@ int Feeder::release(RodState& s) {
     }
   }
   return released;
+}
+
+void Feeder::save(StateWriter& out) const {
+  out.tag("FEED");
+  std::ostringstream text;
+  text << rng_;
+  out.put(text.str());
+}
+
+void Feeder::load(StateReader& in) {
+  in.tag("FEED");
+  std::string text;
+  in.get(text);
+  std::istringstream stream(text);
+  stream >> rng_;
+  if (!stream) in.fail("the feeder's random stream does not parse");
 }
 
 }  // namespace wirepack

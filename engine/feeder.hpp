@@ -13,6 +13,7 @@
 #include <random>
 
 #include "engine/rod/rod_state.hpp"
+#include "engine/state_archive.hpp"
 
 namespace wirepack {
 
@@ -40,6 +41,9 @@ class Feeder {
   // Releases guide nodes that passed the hole plane and appends new tail nodes. Returns the
   // number of nodes released (0 if the DOF layout did not change).
   int release(RodState& s);
+  // Checkpoints: the imperfections' random stream (everything else is set by the parameters).
+  void save(StateWriter& out) const;
+  void load(StateReader& in);
 
  private:
   FeederParams p_;

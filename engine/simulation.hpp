@@ -5,6 +5,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "engine/params.hpp"
@@ -42,6 +43,15 @@ class Simulation {
   // Steps until l() >= l_target.
   void advance_to(double l_target);
   bool finished() const { return l() >= params().l_max; }
+
+  // Checkpoints (docs/design.md §4.8): the dynamic state after the last accepted step (the
+  // rod and shell, the integrator, the feeder's random stream, every term's contact lists and
+  // friction springs) as bytes; restore_state() puts it into a Simulation built from the same
+  // parameters, which then continues bitwise as the saved one would have. restore_state throws
+  // CheckpointError (engine/state_archive.hpp) for bytes of another scene or layout, leaving
+  // this Simulation unusable.
+  std::string save_state() const;
+  void restore_state(std::string_view bytes);
 
   const SceneParams& params() const;
   double l() const;     // injected length / R

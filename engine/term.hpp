@@ -4,6 +4,7 @@
 #include <string>
 
 #include "engine/rod/rod_state.hpp"
+#include "engine/state_archive.hpp"
 #include "engine/term_type.hpp"
 
 namespace wirepack {
@@ -47,6 +48,13 @@ class Term {
   // Why the state of the last accumulate() cannot be accepted (empty: it can), e.g. a contact
   // whose bodies passed through each other.
   virtual std::string failure() const { return {}; }
+
+  // Checkpoints (docs/design.md §4.8): the state this term carries from one accepted step to
+  // the next (contact lists, friction springs), written after a commit() and read back into a
+  // term of the same scene; what the next accumulate() recomputes is not stored. A restored
+  // term continues bitwise as the saved one would have.
+  virtual void save(StateWriter& /*out*/) const {}
+  virtual void load(StateReader& /*in*/) {}
 };
 
 }  // namespace wirepack

@@ -3,12 +3,17 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 
 #include "analysis/observables.hpp"
 #include "engine/simulation.hpp"
+#include "engine/state_archive.hpp"
+#include "sweep/atomic_file.hpp"
 #include "sweep/format.hpp"
+#include "sweep/run_checkpoint.hpp"
 #include "sweep/shell_fields.hpp"
+#include "sweep/sweep_config.hpp"
 
 namespace wirepack::sweep {
 
@@ -59,6 +64,11 @@ class Recorder {
 
   double last_row_l() const { return last_row_l_; }
   double last_snapshot_l() const { return last_snapshot_l_; }
+  // A resumed run: the rows and snapshots so far are in the record already.
+  void resume(double last_row_l, double last_snapshot_l) {
+    last_row_l_ = last_row_l;
+    last_snapshot_l_ = last_snapshot_l;
+  }
 
  private:
   const Scene& scene_;
@@ -81,13 +91,19 @@ std::string progress_line(double l, double l_max, double wall, bool done = false
 }  // namespace
 
 RunOutcome run_scene(const Scene& scene, const std::string& out_path, std::ostream* progress,
-                     const std::function<int()>& threads, const SeriesList& series) {
+                     const std::function<int()>& threads, const SeriesList& series,
+                     const CheckpointOptions& checkpoint) {
   using clock = std::chrono::steady_clock;
   const auto t0 = clock::now();
-  const auto wall = [&] { return std::chrono::duration<double>(clock::now() - t0).count(); };
+  double wall_before = 0;  // wall time of the run's part before the checkpoint it resumed [s]
+  const auto wall = [&] {
+    return wall_before + std::chrono::duration<double>(clock::now() - t0).count();
+  };
   const double every = scene.output.every_l;
   const double snap_every = scene.output.snapshots_every_l;
   const double l_max = scene.engine.l_max;
+  const bool checkpoints = checkpoint.every_s > 0;
+  const std::string ckpt_path = checkpoint_path(out_path);
 
   RunRecord record;
   record.config = scene.resolved;
@@ -96,16 +112,77 @@ RunOutcome run_scene(const Scene& scene, const std::string& out_path, std::ostre
   record.started = utc_now_iso8601();
   Recorder rec(scene, record, series);
   RunOutcome out;
+  double next_row = 0, next_snap = 0;
+
+  // Resumes from the checkpoint at ckpt_path into `sim`, the record and the sampling points;
+  // false (with the reason in out.checkpoint_note) when it cannot be used: the run then starts
+  // at l = 0 with a fresh simulation, and the checkpoint is overwritten by the next one.
+  const auto resume = [&](std::unique_ptr<Simulation>& sim) {
+    try {
+      RunCheckpoint c = read_checkpoint(ckpt_path);
+      if (c.config != canonical_json(scene.resolved))
+        throw CheckpointError(ckpt_path + ": holds another configuration");
+      if (c.record.series.size() != series.size())
+        throw CheckpointError(ckpt_path + ": records other series");
+      for (std::size_t k = 0; k < series.size(); ++k) {
+        if (c.record.series[k].name != series[k].name)
+          throw CheckpointError(ckpt_path + ": records other series");
+      }
+      sim->restore_state(c.engine);
+      record.series = std::move(c.record.series);
+      record.snapshots = std::move(c.record.snapshots);
+      record.started = c.record.started;
+      rec.resume(c.last_row_l, c.last_snapshot_l);
+      next_row = c.next_row;
+      next_snap = c.next_snapshot;
+      wall_before = c.wall_s;
+      out.resumed_l = sim->l();
+      return true;
+    } catch (const std::exception& e) {
+      out.checkpoint_note = std::string("checkpoint not used: ") + e.what();
+      sim = std::make_unique<Simulation>(scene.engine);  // a failed restore leaves it unusable
+      return false;
+    }
+  };
+  // Writes the checkpoint; a failure (a full disk) is noted and the run goes on.
+  const auto save = [&](const Simulation& sim) {
+    RunCheckpoint c;
+    c.config = canonical_json(scene.resolved);
+    c.wall_s = wall();
+    c.next_row = next_row;
+    c.next_snapshot = next_snap;
+    c.last_row_l = rec.last_row_l();
+    c.last_snapshot_l = rec.last_snapshot_l();
+    c.engine = sim.save_state();
+    c.record = std::move(record);  // moved back below, also on failure
+    try {
+      write_checkpoint(c, ckpt_path);
+    } catch (const std::exception& e) {
+      const bool first = out.checkpoint_note.empty();
+      out.checkpoint_note = std::string("checkpoint not written: ") + e.what();
+      if (progress && first) *progress << out.checkpoint_note << std::endl;
+    }
+    record = std::move(c.record);
+  };
 
   std::unique_ptr<Simulation> sim;
   try {
     sim = std::make_unique<Simulation>(scene.engine);
-    rec.row(*sim, wall());
-    rec.snapshot(*sim);
-    // Next samples at integer multiples of the intervals (no drift from accumulation).
-    double next_row = every * (std::floor(sim->l() / every) + 1);
-    double next_snap = snap_every * (std::floor(sim->l() / snap_every) + 1);
-    double next_report = 2.0;
+    std::error_code ec;
+    const bool resumed = checkpoints && std::filesystem::exists(ckpt_path, ec) && resume(sim);
+    if (progress && !out.checkpoint_note.empty()) *progress << out.checkpoint_note << std::endl;
+    if (resumed) {
+      if (progress)
+        *progress << "resumed from the checkpoint at l = " << format_number(sim->l()) << std::endl;
+    } else {
+      rec.row(*sim, wall());
+      rec.snapshot(*sim);
+      // Next samples at integer multiples of the intervals (no drift from accumulation).
+      next_row = every * (std::floor(sim->l() / every) + 1);
+      next_snap = snap_every * (std::floor(sim->l() / snap_every) + 1);
+    }
+    double next_report = wall() + 2.0;
+    double next_checkpoint = wall() + checkpoint.every_s;
     while (!sim->finished()) {
       if (threads && sim->steps() % 64 == 0) sim->set_threads(threads());
       sim->step();
@@ -117,6 +194,10 @@ RunOutcome run_scene(const Scene& scene, const std::string& out_path, std::ostre
       if (l >= next_snap) {
         rec.snapshot(*sim);
         next_snap = snap_every * (std::floor(l / snap_every) + 1);
+      }
+      if (checkpoints && wall() >= next_checkpoint) {
+        save(*sim);
+        next_checkpoint = wall() + checkpoint.every_s;
       }
       if (progress && wall() >= next_report) {
         // The last recorded D and N, so a user sees the morphology emerge.
@@ -154,6 +235,12 @@ RunOutcome run_scene(const Scene& scene, const std::string& out_path, std::ostre
       *progress << "run failed at l = " << format_number(out.l) << ": " << out.failure << std::endl;
   }
   write_run_file(record, out_path);
+  // The run file is whole: its checkpoint has served (kept if the write above threw, so that a
+  // rerun resumes near the end).
+  if (checkpoints) {
+    std::error_code ec;
+    std::filesystem::remove(ckpt_path, ec);
+  }
   return out;
 }
 

@@ -16,8 +16,20 @@ struct RunOutcome {
   std::string failure;                    // reason of a failed run ("" otherwise)
   double l = 0;                           // injected length / R reached
   long steps = 0;                         // accepted steps
-  double wall_s = 0;                      // wall-clock duration [s]
+  double wall_s = 0;                      // wall-clock duration, resumed runs' earlier part too [s]
+  double resumed_l = -1;  // l of the checkpoint this run resumed from (-1: started at l = 0)
+  // Why a checkpoint was not used or could not be written ("" when nothing went wrong); the
+  // run itself is unaffected by it.
+  std::string checkpoint_note;
 };
+
+// Checkpoints of a run (sweep/run_checkpoint.hpp): every `every_s` seconds of wall time the
+// state goes to RUN.h5.ckpt; a run whose checkpoint exists (same configuration) resumes from
+// it. <= 0: no checkpoints, and an existing one is neither read nor removed.
+struct CheckpointOptions {
+  double every_s = 0;  // [s]
+};
+inline constexpr double kDefaultCheckpointEvery = 300.0;  // [s]
 
 // Names of the recorded series (sweep/series.hpp), in column order.
 const std::vector<std::string>& series_names();
@@ -30,9 +42,12 @@ const std::vector<std::string>& series_names();
 // throws RunFileError. `threads` (empty: 1) says how many threads the simulation's force loops
 // may use; it is asked again every 64 steps, so a sweep can give its idle cores to the runs
 // still going. The result does not depend on it (bitwise). `series`: the columns recorded, one
-// value of each per row, in its order.
+// value of each per row, in its order. `checkpoint`: see CheckpointOptions; a resumed run's file
+// is bitwise the uninterrupted run's (its wall-time column apart); the checkpoint is removed once
+// the run file is written.
 RunOutcome run_scene(const Scene& scene, const std::string& out_path, std::ostream* progress,
                      const std::function<int()>& threads = {},
-                     const SeriesList& series = recorded_series());
+                     const SeriesList& series = recorded_series(),
+                     const CheckpointOptions& checkpoint = {});
 
 }  // namespace wirepack::sweep

@@ -18,6 +18,7 @@
 #include "sweep/errors.hpp"
 #include "sweep/format.hpp"
 #include "sweep/run.hpp"
+#include "sweep/run_checkpoint.hpp"
 #include "sweep/run_file.hpp"
 
 namespace wirepack::sweep {
@@ -133,8 +134,15 @@ bool inspect(SweepState& st, ManifestEntry& e, bool retry_failed, SweepOutcome& 
   const std::string path = st.path(e);
   std::error_code ec;
   if (fs::exists(path + ".part", ec)) {
-    // A killed run's partial file; the run starts over.
+    // A killed run's partial file; the run starts over (from its checkpoint, if it has one).
     if (fs::remove(path + ".part", ec)) ++out.parts_removed;
+  }
+  // Temporaries of checkpoints being written when a run was killed.
+  const fs::path run_path(path);
+  const std::string tmp_prefix = checkpoint_path(run_path.filename().string()) + ".tmp.";
+  for (const auto& f : fs::directory_iterator(run_path.parent_path(), ec)) {
+    std::error_code rm;
+    if (f.path().filename().string().rfind(tmp_prefix, 0) == 0) fs::remove(f.path(), rm);
   }
   if (!fs::exists(path, ec)) return true;
   RunRecord rec;
@@ -149,6 +157,8 @@ bool inspect(SweepState& st, ManifestEntry& e, bool retry_failed, SweepOutcome& 
     return true;
   }
   if (rec.status == RunStatus::Running) return true;
+  // The run file is final: a checkpoint left beside it (killed between the two) has served.
+  fs::remove(checkpoint_path(path), ec);
   e.status = rec.status == RunStatus::Complete ? EntryStatus::Complete : EntryStatus::Failed;
   e.reason = rec.failure;
   e.started = rec.started;
@@ -210,12 +220,21 @@ void execute(SweepState& st, ManifestEntry& e, const SweepOptions& opt) noexcept
     const auto t0 = clock_type::now();
     EntryStatus status = EntryStatus::Failed;
     std::string reason;
+    double run_wall = -1;  // the run's whole wall time, a resumed run's earlier part included
     try {
       // The run's own progress is not shown inside a sweep (null stream).
-      const RunOutcome r =
-          run_scene(e.run->scene, path, nullptr, [&st] { return st.threads_per_run(); });
+      const RunOutcome r = run_scene(
+          e.run->scene, path, nullptr, [&st] { return st.threads_per_run(); }, recorded_series(),
+          CheckpointOptions{opt.checkpoint_every_s});
       status = r.status == RunStatus::Complete ? EntryStatus::Complete : EntryStatus::Failed;
       reason = r.failure;
+      run_wall = r.wall_s;
+      std::lock_guard lock(st.mutex);
+      if (!r.checkpoint_note.empty()) st.warn(e.run->file + ": " + r.checkpoint_note);
+      if (r.resumed_l >= 0 && opt.progress)
+        *opt.progress << e.run->file
+                      << ": resumed from its checkpoint at l = " << format_number(r.resumed_l)
+                      << std::endl;
     } catch (const RunFileError& ex) {
       reason = std::string("run file not written: ") + ex.what();
     } catch (const std::exception& ex) {
@@ -224,7 +243,7 @@ void execute(SweepState& st, ManifestEntry& e, const SweepOptions& opt) noexcept
       reason = "unknown error";
     }
     if (status == EntryStatus::Failed && reason.empty()) reason = "unknown error";
-    const double wall = seconds_since(t0);
+    const double wall = run_wall >= 0 ? run_wall : seconds_since(t0);
 
     std::lock_guard lock(st.mutex);
     e.status = status;

@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "sweep/run.hpp"
 #include "sweep/sweep_config.hpp"
 #include "sweep/sweep_manifest.hpp"
 
@@ -19,6 +20,8 @@ struct SweepOptions {
   bool retry_failed = false;         // rerun runs whose file says "failed" (otherwise kept)
   std::ostream* progress = nullptr;  // start line, progress lines, warnings (may be null)
   double progress_interval_s = 5.0;  // least time between progress lines [s]
+  // Wall seconds between a run's checkpoints (sweep/run.hpp, CheckpointOptions); <= 0: none.
+  double checkpoint_every_s = kDefaultCheckpointEvery;
 };
 
 struct SweepOutcome {

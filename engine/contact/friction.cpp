@@ -175,6 +175,61 @@ void FrictionHistory::forces(const std::vector<Query>& queries, std::vector<Vec3
   }
 }
 
+void FrictionHistory::Table::save(StateWriter& out) const {
+  out.tag("FRTB");
+  out.put(keys_);
+  for (std::size_t i = 0; i < keys_.size(); ++i) {
+    if (keys_[i] == kEmpty) continue;
+    const Entry& e = entries_[i];
+    out.put(e.F);
+    out.put(e.F_trial);
+    out.put(e.Fn);
+    out.put(e.Fn_trial);
+    out.put(static_cast<char>(e.sliding));
+    out.put(static_cast<char>(e.sliding_trial));
+    out.put(e.trial);
+  }
+}
+
+void FrictionHistory::Table::load(StateReader& in) {
+  in.tag("FRTB");
+  in.get(keys_);
+  const std::size_t capacity = keys_.size();
+  if (capacity != 0 && (capacity < 64 || !std::has_single_bit(capacity)))
+    in.fail("friction table capacity " + std::to_string(capacity));
+  entries_.assign(capacity, Entry{});
+  shift_ = capacity ? 64 - std::countr_zero(capacity) : 64;
+  size_ = 0;
+  for (std::size_t i = 0; i < capacity; ++i) {
+    if (keys_[i] == kEmpty) continue;
+    Entry& e = entries_[i];
+    in.get(e.F);
+    in.get(e.F_trial);
+    in.get(e.Fn);
+    in.get(e.Fn_trial);
+    e.sliding = in.get<char>() != 0;
+    e.sliding_trial = in.get<char>() != 0;
+    in.get(e.trial);
+    ++size_;
+  }
+}
+
+void FrictionHistory::save(StateWriter& out) const {
+  out.tag("FRIC");
+  map_.save(out);
+  out.put(dt_);
+  out.put(trial_);
+  out.put(slipping_);
+}
+
+void FrictionHistory::load(StateReader& in) {
+  in.tag("FRIC");
+  map_.load(in);
+  in.get(dt_);
+  in.get(trial_);
+  in.get(slipping_);
+}
+
 void FrictionHistory::commit() {
   map_.retain([this](Entry& e) {
     if (e.trial != trial_) return false;  // not seen in the accepted step: the contact opened

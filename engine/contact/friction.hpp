@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "engine/state_archive.hpp"
 #include "engine/types.hpp"
 
 namespace wirepack {
@@ -84,6 +85,9 @@ class FrictionHistory {
   void commit();
 
   std::size_t size() const { return map_.size(); }
+  // Checkpoints: the committed springs (the table slot by slot) and the trial counter.
+  void save(StateWriter& out) const;
+  void load(StateReader& in);
   long slipping() const { return slipping_; }  // contacts slipping in the last trial
   const FrictionParams& params() const { return p_; }
 
@@ -113,6 +117,8 @@ class FrictionHistory {
     template <class Keep>
     void retain(Keep keep);
     std::size_t size() const { return size_; }
+    void save(StateWriter& out) const;
+    void load(StateReader& in);
 
    private:
     static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};  // never a key: a >= 0
@@ -137,5 +143,15 @@ class FrictionHistory {
   long trial_ = 0;
   long slipping_ = 0;
 };
+
+// A contact term's optional history in a checkpoint: a flag, then the history.
+inline void save_friction(StateWriter& out, const FrictionHistory* f) {
+  out.put(static_cast<char>(f != nullptr));
+  if (f) f->save(out);
+}
+inline void load_friction(StateReader& in, FrictionHistory* f) {
+  if ((in.get<char>() != 0) != (f != nullptr)) in.fail("friction on one side only");
+  if (f) f->load(in);
+}
 
 }  // namespace wirepack

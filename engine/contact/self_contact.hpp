@@ -73,6 +73,8 @@ class SelfContactTerm : public Term {
     if (friction_) friction_->commit();
   }
   bool has_friction() const override { return friction_ != nullptr; }
+  void save(StateWriter& out) const override;
+  void load(StateReader& in) override;
   const FrictionHistory* friction() const { return friction_.get(); }
   int exclusion() const { return exclude_; }
   long rebuilds() const { return rebuilds_; }

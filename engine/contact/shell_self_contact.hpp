@@ -89,6 +89,8 @@ class ShellSelfContactTerm : public Term {
     if (friction_) friction_->commit();
   }
   bool has_friction() const override { return friction_ != nullptr; }
+  void save(StateWriter& out) const override;
+  void load(StateReader& in) override;
   // Two pieces of the shell passed through each other (overlap t for vertex-face contacts).
   std::string failure() const override;
 

@@ -109,4 +109,14 @@ double SphereWallTerm::omega_max_sq(const RodInertia&) const {
   return max_stiffness_ / p_.node_mass;
 }
 
+void SphereWallTerm::save(StateWriter& out) const {
+  out.tag("WALL");
+  save_friction(out, friction_.get());
+}
+
+void SphereWallTerm::load(StateReader& in) {
+  in.tag("WALL");
+  load_friction(in, friction_.get());
+}
+
 }  // namespace wirepack

@@ -47,6 +47,8 @@ class SphereWallTerm : public Term {
     if (friction_) friction_->commit();
   }
   bool has_friction() const override { return friction_ != nullptr; }
+  void save(StateWriter& out) const override;
+  void load(StateReader& in) override;
   const FrictionHistory* friction() const { return friction_.get(); }
 
  private:

@@ -58,6 +58,8 @@ class WireShellTerm : public Term {
     if (friction_) friction_->commit();
   }
   bool has_friction() const override { return friction_ != nullptr; }
+  void save(StateWriter& out) const override;
+  void load(StateReader& in) override;
   // The wire's axis reached the shell's mid-surface in a contact (overlap r + t/2).
   std::string failure() const override;
 

@@ -133,4 +133,24 @@ double PredictorCorrector::step(RodState& s, const EvaluateFn& eval,
   }
 }
 
+void PredictorCorrector::save(StateWriter& out) const {
+  out.tag("INTG");
+  out.put(dt_);
+  out.put(dt_stable_);
+  out.put(rejected_);
+  out.put(a_);
+  out.put(alpha_);
+  out.put(sa_);
+}
+
+void PredictorCorrector::load(StateReader& in) {
+  in.tag("INTG");
+  in.get(dt_);
+  in.get(dt_stable_);
+  in.get(rejected_);
+  in.get(a_);
+  in.get(alpha_);
+  in.get(sa_);
+}
+
 }  // namespace wirepack

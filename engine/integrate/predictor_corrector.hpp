@@ -11,6 +11,7 @@
 #include <functional>
 
 #include "engine/rod/rod_state.hpp"
+#include "engine/state_archive.hpp"
 
 namespace wirepack {
 
@@ -46,6 +47,10 @@ class PredictorCorrector {
   double dt_stable() const { return dt_stable_; }
   long rejected() const { return rejected_; }
   const Vec3List& acceleration() const { return a_; }
+  // Checkpoints: the step size, the stability step, the rejection count and the accelerations
+  // of the last accepted state (the next predictor starts from them).
+  void save(StateWriter& out) const;
+  void load(StateReader& in);
 
  private:
   double stable_step(double omega2) const;

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The paper reproduction campaign (results/paper/README.md). From anywhere, after scripts/setup.sh:
-#   bash results/paper/make.sh status              runs done and left per figure; runs nothing
+#   bash results/paper/make.sh status              runs done and left per figure (partial: runs
+#                                                  with a checkpoint to resume from); runs nothing
 #   bash results/paper/make.sh run FIG [THREADS]   runs or resumes FIG's sweep (fig5b, fig5a, fig4,
 #                                                  fig1_3), seeds in stages: every point gets seeds
 #                                                  1-2 first, then 3-5, then the rest, so that an
@@ -10,7 +11,8 @@
 #                                                  render (ParaView; wire at half its radius,
 #                                                  coloured by kappa R) into FIG/pictures
 # The run data (FIG/sweep: manifest.json, joblog.csv, runs/*.h5) are committed: whoever picks the
-# campaign up resumes it. A run is the unit of work: a killed run starts again from l = 0.
+# campaign up resumes it. A killed run resumes from its checkpoint (runs/X.h5.ckpt, every 120 s
+# of wall time here; commit them too), bitwise as if it had never been interrupted.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 here=$root/results/paper
@@ -23,19 +25,20 @@ expected_files() {  # FIG -> the run files its sweep file asks for, one per line
 
 status() {
   local total_done=0 total=0
-  printf '%-7s %5s %5s %6s  %s\n' figure done left failed "run data"
+  printf '%-7s %5s %5s %6s %8s  %s\n' figure done left failed partial "run data"
   for f in "${figs[@]}"; do
-    local n=0 done=0 failed=0
+    local n=0 done=0 failed=0 partial=0
     while read -r file; do
       n=$((n + 1))
       [ -f "$here/$f/sweep/$file" ] && done=$((done + 1))
+      [ -f "$here/$f/sweep/$file.ckpt" ] && partial=$((partial + 1))
     done < <(expected_files "$f")
     if [ -f "$here/$f/sweep/manifest.json" ]; then
       failed=$(grep -c '"status": "failed"' "$here/$f/sweep/manifest.json" || true)
     fi
     local size="-"
     [ -d "$here/$f/sweep" ] && size=$(du -sh "$here/$f/sweep" | cut -f1)
-    printf '%-7s %5d %5d %6d  %s\n' "$f" "$done" $((n - done)) "$failed" "$size"
+    printf '%-7s %5d %5d %6d %8d  %s\n' "$f" "$done" $((n - done)) "$failed" "$partial" "$size"
     total_done=$((total_done + done))
     total=$((total + n))
   done
@@ -56,7 +59,8 @@ run() {  # FIG THREADS
     [ "$stage" -le "$seeds" ] || stage=$seeds
     sed "s/\"seeds\": $seeds/\"seeds\": $stage/" "$sweep" > "$tmp/$f.sweep.json"
     echo "== $f: seeds 1-$stage ($(date -u +%H:%M:%S) UTC)"
-    "$wp" sweep "$tmp/$f.sweep.json" --out "$here/$f/sweep" --threads "$threads"
+    "$wp" sweep "$tmp/$f.sweep.json" --out "$here/$f/sweep" --threads "$threads" \
+      --checkpoint-every 120
     [ "$stage" -lt "$seeds" ] || break
   done
 }

@@ -1,12 +1,15 @@
 // Kill campaign (issue 19, part 4): a small sweep is killed with SIGKILL at pseudo-random
-// moments (fixed seed) and resumed each time, until at least kKills kills. Three kinds of
+// moments (fixed seed) and resumed each time, until at least kKills kills. Four kinds of
 // moment, in turn: after a random delay in the range of the sweep's duration; when the n-th run
 // file is created as NAME.h5.part (inside run-file writes); when the n-th manifest temporary
-// is created (inside manifest rewrites); the last two are seen through inotify, no environment
-// variable or hook in wirepack. After every kill each final-named run file must be whole; at
-// the end of every round every run is complete with series and snapshots bitwise equal to an
-// uninterrupted sweep, no .part or temporary is left, and the manifest and joblog agree with
-// the files (one joblog line per run).
+// is created (inside manifest rewrites); when the n-th run checkpoint temporary is created
+// (inside checkpoint writes: the sweep checkpoints its runs every 20 ms, so most kills also
+// leave checkpoints that the next invocation resumes from); the last three are seen through
+// inotify, no environment variable or hook in wirepack. After every kill each final-named run
+// file must be whole and each checkpoint readable; at the end of every round every run is
+// complete with series and snapshots bitwise equal to an uninterrupted sweep without
+// checkpoints, no .part, checkpoint or temporary is left, and the manifest and joblog agree
+// with the files (one joblog line per run).
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
@@ -28,6 +31,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "sweep/run_checkpoint.hpp"
 #include "sweep/run_file.hpp"
 #include "sweep/sweep_config.hpp"
 #include "sweep/temp_dir.hpp"
@@ -52,8 +56,10 @@ bool ends_with(const std::string& s, const std::string& tail) {
   return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
 }
 
-// Starts `wirepack sweep s.json --out OUT --threads 2` in `cwd`, output into `log`.
-pid_t start_sweep(const fs::path& cwd, const std::string& out, const std::string& log) {
+// Starts `wirepack sweep s.json --out OUT --threads 2 --checkpoint-every EVERY` in `cwd`,
+// output into `log`.
+pid_t start_sweep(const fs::path& cwd, const std::string& out, const std::string& log,
+                  const char* checkpoint_every) {
   const pid_t pid = ::fork();
   if (pid != 0) return pid;
   if (::chdir(cwd.c_str()) != 0) ::_exit(127);
@@ -65,7 +71,7 @@ pid_t start_sweep(const fs::path& cwd, const std::string& out, const std::string
   if (::nice(5) == -1) {
   }
   ::execl(WIREPACK_BINARY, WIREPACK_BINARY, "sweep", "s.json", "--out", out.c_str(), "--threads",
-          "2", static_cast<char*>(nullptr));
+          "2", "--checkpoint-every", checkpoint_every, static_cast<char*>(nullptr));
   ::_exit(127);
 }
 
@@ -108,7 +114,7 @@ TEST(KillCampaign, SweepSurvivesSigkillAtRandomMoments) {
 
   // The uninterrupted reference, and its duration (the range of the random delays).
   const auto t_ref0 = clock_type::now();
-  const pid_t ref = start_sweep(dir.path(), "ref", dir / "ref.log");
+  const pid_t ref = start_sweep(dir.path(), "ref", dir / "ref.log", "0");
   int status = 0;
   ASSERT_EQ(::waitpid(ref, &status, 0), ref);
   ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << read_text(dir / "ref.log");
@@ -117,15 +123,17 @@ TEST(KillCampaign, SweepSurvivesSigkillAtRandomMoments) {
   for (const auto& r : sw.runs) reference[r.file] = sweep::read_run_file(dir / ("ref/" + r.file));
 
   std::mt19937_64 rng(19);
-  int kills = 0, during_part = 0, during_manifest = 0, invocations = 0, rounds = 0;
-  int by_kind[3] = {0, 0, 0};
+  int kills = 0, during_part = 0, during_manifest = 0, during_checkpoint = 0, invocations = 0,
+      rounds = 0, resumed = 0;
+  int by_kind[4] = {0, 0, 0, 0};
   while (kills < kKills && rounds < kRounds) {
     const std::string out = "k" + std::to_string(rounds++);
     const fs::path root = dir.path() / out;
     fs::create_directories(root / "runs");
     for (int attempt = 0;; ++attempt) {
       ASSERT_LT(attempt, 60) << out << ": no progress after 60 invocations";
-      const int kind = kills % 3;  // 0: delay, 1: n-th .part, 2: n-th manifest temporary
+      // 0: delay, 1: n-th .part, 2: n-th manifest temporary, 3: n-th checkpoint temporary
+      const int kind = kills % 4;
       const int nth = std::uniform_int_distribution<int>(1, 3)(rng);
       const double delay = std::uniform_real_distribution<double>(0, t_ref)(rng);
 
@@ -134,7 +142,7 @@ TEST(KillCampaign, SweepSurvivesSigkillAtRandomMoments) {
       ASSERT_GE(::inotify_add_watch(ifd, root.c_str(), IN_CREATE), 0);
       ASSERT_GE(::inotify_add_watch(ifd, (root / "runs").c_str(), IN_CREATE), 0);
       const auto t0 = clock_type::now();
-      const pid_t pid = start_sweep(dir.path(), out, dir / "sweep.log");
+      const pid_t pid = start_sweep(dir.path(), out, dir / "sweep.log", "0.02");
       ASSERT_GT(pid, 0);
       ++invocations;
       int seen = 0;
@@ -148,7 +156,8 @@ TEST(KillCampaign, SweepSurvivesSigkillAtRandomMoments) {
             const auto* ev = reinterpret_cast<const inotify_event*>(q);
             const std::string name = ev->len ? ev->name : "";
             if ((kind == 1 && ends_with(name, ".h5.part")) ||
-                (kind == 2 && name.rfind("manifest.json.tmp.", 0) == 0))
+                (kind == 2 && name.rfind("manifest.json.tmp.", 0) == 0) ||
+                (kind == 3 && name.find(".h5.ckpt.tmp.") != std::string::npos))
               ++seen;
             q += sizeof(inotify_event) + ev->len;
           }
@@ -162,6 +171,12 @@ TEST(KillCampaign, SweepSurvivesSigkillAtRandomMoments) {
         exited = ::waitpid(pid, &status, killed ? 0 : WNOHANG) == pid;
       }
       ::close(ifd);
+      // Runs this invocation resumed from their checkpoints.
+      const std::string log_text = read_text(dir / "sweep.log");
+      for (std::size_t at = 0;
+           (at = log_text.find("resumed from its checkpoint", at)) != std::string::npos; ++at)
+        ++resumed;
+      EXPECT_EQ(log_text.find("checkpoint not"), std::string::npos) << log_text;
       if (exited && !WIFSIGNALED(status)) {
         // Finished before the kill: the round is over.
         ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << read_text(dir / "sweep.log");
@@ -170,11 +185,20 @@ TEST(KillCampaign, SweepSurvivesSigkillAtRandomMoments) {
       ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL);
       ++kills;
       ++by_kind[kind];
-      // What the kill interrupted, and the invariant: a final-named file is always whole.
-      bool part = false, tmp = false;
+      // What the kill interrupted, and the invariants: a final-named file is always whole, a
+      // checkpoint always readable.
+      bool part = false, tmp = false, ckpt_tmp = false;
       for (const auto& n : names_in(root / "runs")) {
         if (ends_with(n, ".part")) {
           part = true;
+          continue;
+        }
+        if (n.find(".h5.ckpt.tmp.") != std::string::npos) {
+          ckpt_tmp = true;
+          continue;
+        }
+        if (ends_with(n, ".h5.ckpt")) {
+          EXPECT_NO_THROW(sweep::read_checkpoint((root / "runs" / n).string())) << n;
           continue;
         }
         const std::string file = (root / "runs" / n).string();
@@ -186,6 +210,7 @@ TEST(KillCampaign, SweepSurvivesSigkillAtRandomMoments) {
       for (const auto& n : names_in(root)) tmp = tmp || n.rfind("manifest.json.tmp.", 0) == 0;
       during_part += part;
       during_manifest += tmp;
+      during_checkpoint += ckpt_tmp;
     }
 
     // The round's end state.
@@ -224,14 +249,17 @@ TEST(KillCampaign, SweepSurvivesSigkillAtRandomMoments) {
   }
   std::cout << "kill campaign: " << kills << " SIGKILLs survived in " << rounds << " rounds, "
             << invocations << " invocations (" << by_kind[0] << " after a random delay, "
-            << by_kind[1] << " at a run-file creation, " << by_kind[2]
-            << " at a manifest rewrite); " << during_part
+            << by_kind[1] << " at a run-file creation, " << by_kind[2] << " at a manifest rewrite, "
+            << by_kind[3] << " at a checkpoint write); " << during_part
             << " left a .part on disk (inside a run-file write), " << during_manifest
-            << " a manifest temporary (inside a manifest rewrite); reference sweep " << t_ref
-            << " s" << std::endl;
+            << " a manifest temporary (inside a manifest rewrite), " << during_checkpoint
+            << " a checkpoint temporary; " << resumed
+            << " runs resumed from checkpoints; reference sweep " << t_ref << " s" << std::endl;
   EXPECT_GE(kills, kKills);
   EXPECT_GE(during_part, 1);
   EXPECT_GE(during_manifest, 1);
+  EXPECT_GE(during_checkpoint, 1);
+  EXPECT_GE(resumed, 1);
 }
 
 }  // namespace
