@@ -1,8 +1,11 @@
 // The wirepack executable (docs/design.md §1): subcommands wire the layers together.
 // Exit codes: 0 success, 2 bad input (nothing is written), 1 a run failed.
+#include <signal.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cmath>
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -48,6 +51,31 @@ constexpr int kOk = 0;
 constexpr int kRunFailed = 1;
 constexpr int kBadInput = 2;
 
+// SIGTERM (a batch system's time limit, scancel) and SIGINT (Ctrl-C) stop a run or a sweep
+// cleanly: the runs going write their checkpoints and the process exits with 128 + the signal,
+// so the same command resumes them (docs/design.md §4.8). A second signal kills at once.
+std::atomic<bool> g_stop{false};
+volatile std::sig_atomic_t g_stop_signal = 0;
+static_assert(std::atomic<bool>::is_always_lock_free);  // safe to set in a signal handler
+
+extern "C" void on_stop_signal(int sig) {
+  g_stop_signal = sig;
+  g_stop.store(true);
+}
+
+void install_stop_handlers() {
+  struct sigaction sa {};
+  sa.sa_handler = on_stop_signal;
+  sigemptyset(&sa.sa_mask);
+  sa.sa_flags = SA_RESETHAND;  // the second one takes the default action
+  sigaction(SIGTERM, &sa, nullptr);
+  sigaction(SIGINT, &sa, nullptr);
+}
+
+int stopped_exit_code() {
+  return 128 + static_cast<int>(g_stop_signal);
+}
+
 // The output's directory must exist and be writable before any work starts, so an hours-long
 // run cannot end in an unwritable path.
 void check_output_path(const std::string& out) {
@@ -70,15 +98,20 @@ int cmd_run(const std::string& scene_path, const std::string& out, int threads,
                           ? parse_scene(default_scene_json(), "<embedded default scene>")
                           : load_scene(scene_path);
   check_output_path(out);
+  install_stop_handlers();
   RunOutcome outcome;
   try {
     outcome = run_scene(
         scene, out, &std::cerr, [threads] { return threads; }, recorded_series(),
-        CheckpointOptions{checkpoint_every});
+        CheckpointOptions{checkpoint_every, &g_stop});
   } catch (const RunFileError& e) {
     // The simulation ended but its file could not be written (a full disk, a size limit).
     std::cerr << "wirepack: run file not written: " << e.what() << '\n';
     return kRunFailed;
+  }
+  if (outcome.status == RunStatus::Running) {
+    std::cerr << "wirepack: stopped by signal " << g_stop_signal << '\n';
+    return stopped_exit_code();
   }
   if (outcome.status != RunStatus::Complete) {
     std::cerr << "wirepack: run failed: " << outcome.failure << " (run file " << out << ")\n";
@@ -146,6 +179,8 @@ int cmd_sweep(const SweepArgs& a) {
   opt.retry_failed = a.retry_failed;
   opt.checkpoint_every_s = a.checkpoint_every;
   opt.progress = &std::cerr;
+  opt.stop = &g_stop;
+  install_stop_handlers();
   const SweepOutcome o = run_sweep(sweep, opt);
 
   std::cerr << "sweep " << sweep.name << ": " << o.runs << " runs"
@@ -163,6 +198,13 @@ int cmd_sweep(const SweepArgs& a) {
   if (o.failed > 0 && !a.retry_failed)
     std::cerr << "  (rerun with --retry-failed to run the failed ones again)\n";
   std::cout << o.manifest << '\n';
+  if (g_stop.load()) {
+    std::cerr << "sweep " << sweep.name << ": stopped by signal " << g_stop_signal << "; "
+              << o.stopped << " run(s) stopped part-way"
+              << (opt.checkpoint_every_s > 0 ? " with their checkpoints" : "")
+              << "; the same command resumes\n";
+    return stopped_exit_code();
+  }
   return o.failed > 0 ? kRunFailed : kOk;
 }
 

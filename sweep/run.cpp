@@ -173,7 +173,8 @@ RunOutcome run_scene(const Scene& scene, const std::string& out_path, std::ostre
     if (progress && !out.checkpoint_note.empty()) *progress << out.checkpoint_note << std::endl;
     if (resumed) {
       if (progress)
-        *progress << "resumed from the checkpoint at l = " << format_number(sim->l()) << std::endl;
+        *progress << "resumed from the checkpoint at l = "
+                  << format_number(std::round(sim->l() * 1e3) / 1e3) << std::endl;
     } else {
       rec.row(*sim, wall());
       rec.snapshot(*sim);
@@ -184,6 +185,20 @@ RunOutcome run_scene(const Scene& scene, const std::string& out_path, std::ostre
     double next_report = wall() + 2.0;
     double next_checkpoint = wall() + checkpoint.every_s;
     while (!sim->finished()) {
+      if (checkpoint.stop && checkpoint.stop->load(std::memory_order_relaxed)) {
+        // Stopped from outside: keep the work in the checkpoint, write no run file.
+        if (checkpoints) save(*sim);
+        out.l = sim->l();
+        out.steps = sim->steps();
+        out.wall_s = wall();
+        if (progress) {
+          *progress << "stopped at l = " << format_number(std::round(out.l * 1e3) / 1e3);
+          if (checkpoints && out.checkpoint_note.empty())
+            *progress << "; checkpoint " << ckpt_path << " written: the same command resumes";
+          *progress << std::endl;
+        }
+        return out;  // status Running
+      }
       if (threads && sim->steps() % 64 == 0) sim->set_threads(threads());
       sim->step();
       const double l = sim->l();

@@ -1,5 +1,6 @@
 #pragma once
 // The run loop (docs/design.md §4.3, §5): one validated scene -> one Simulation -> one run file.
+#include <atomic>
 #include <functional>
 #include <ostream>
 #include <string>
@@ -12,11 +13,13 @@
 namespace wirepack::sweep {
 
 struct RunOutcome {
-  RunStatus status = RunStatus::Running;  // Complete or Failed once run_scene returns
-  std::string failure;                    // reason of a failed run ("" otherwise)
-  double l = 0;                           // injected length / R reached
-  long steps = 0;                         // accepted steps
-  double wall_s = 0;                      // wall-clock duration, resumed runs' earlier part too [s]
+  // Complete or Failed once run_scene returns; Running when it was stopped (CheckpointOptions::
+  // stop): no run file was written, the checkpoint (if on) holds where it stopped.
+  RunStatus status = RunStatus::Running;
+  std::string failure;    // reason of a failed run ("" otherwise)
+  double l = 0;           // injected length / R reached
+  long steps = 0;         // accepted steps
+  double wall_s = 0;      // wall-clock duration, resumed runs' earlier part too [s]
   double resumed_l = -1;  // l of the checkpoint this run resumed from (-1: started at l = 0)
   // Why a checkpoint was not used or could not be written ("" when nothing went wrong); the
   // run itself is unaffected by it.
@@ -26,8 +29,12 @@ struct RunOutcome {
 // Checkpoints of a run (sweep/run_checkpoint.hpp): every `every_s` seconds of wall time the
 // state goes to RUN.h5.ckpt; a run whose checkpoint exists (same configuration) resumes from
 // it. <= 0: no checkpoints, and an existing one is neither read nor removed.
+// `stop` (may be null): once it reads true (a signal handler sets it: SIGTERM at a batch
+// system's time limit, Ctrl-C), the run writes its checkpoint at once (if checkpoints are on)
+// and returns with status Running, writing no run file.
 struct CheckpointOptions {
   double every_s = 0;  // [s]
+  const std::atomic<bool>* stop = nullptr;
 };
 inline constexpr double kDefaultCheckpointEvery = 300.0;  // [s]
 

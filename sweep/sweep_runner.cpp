@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <condition_variable>
 #include <filesystem>
 #include <fstream>
@@ -55,9 +56,10 @@ class SweepState {
   std::vector<ManifestEntry> entries;  // this shard's runs, in run order
   std::unique_ptr<JobLog> joblog;
   std::size_t to_run = 0, started = 0, finished = 0;  // counts of this invocation
-  double finished_wall = 0;                           // sum of wall_s of finished runs [s]
-  int threads = 1;                                    // concurrent runs
-  int cores = 1;  // threads the sweep may use in all (--threads)
+  std::size_t stopped = 0;   // runs stopped part-way (SweepOptions::stop), among `finished`
+  double finished_wall = 0;  // sum of wall_s of finished runs [s]
+  int threads = 1;           // concurrent runs
+  int cores = 1;             // threads the sweep may use in all (--threads)
 
   // Threads for one run's force loops: 1 while runs wait to start; once every run has started,
   // the cores shared among the runs still going (the result does not depend on it).
@@ -209,6 +211,7 @@ std::set<std::string> joblog_ids(const std::string& dir) {
 // OpenMP task).
 void execute(SweepState& st, ManifestEntry& e, const SweepOptions& opt) noexcept {
   try {
+    if (opt.stop && opt.stop->load()) return;  // stopped: the run stays pending
     const std::string path = st.path(e);
     {
       std::lock_guard lock(st.mutex);
@@ -225,16 +228,26 @@ void execute(SweepState& st, ManifestEntry& e, const SweepOptions& opt) noexcept
       // The run's own progress is not shown inside a sweep (null stream).
       const RunOutcome r = run_scene(
           e.run->scene, path, nullptr, [&st] { return st.threads_per_run(); }, recorded_series(),
-          CheckpointOptions{opt.checkpoint_every_s});
+          CheckpointOptions{opt.checkpoint_every_s, opt.stop});
+      if (r.status == RunStatus::Running) {
+        // Stopped part-way: pending again, to resume from its checkpoint next time.
+        std::lock_guard lock(st.mutex);
+        if (!r.checkpoint_note.empty()) st.warn(e.run->file + ": " + r.checkpoint_note);
+        e = ManifestEntry{e.run};
+        ++st.finished;
+        ++st.stopped;
+        st.changed = true;
+        st.manifest_dirty = true;
+        return;
+      }
       status = r.status == RunStatus::Complete ? EntryStatus::Complete : EntryStatus::Failed;
       reason = r.failure;
       run_wall = r.wall_s;
       std::lock_guard lock(st.mutex);
       if (!r.checkpoint_note.empty()) st.warn(e.run->file + ": " + r.checkpoint_note);
       if (r.resumed_l >= 0 && opt.progress)
-        *opt.progress << e.run->file
-                      << ": resumed from its checkpoint at l = " << format_number(r.resumed_l)
-                      << std::endl;
+        *opt.progress << e.run->file << ": resumed from its checkpoint at l = "
+                      << format_number(std::round(r.resumed_l * 1e3) / 1e3) << std::endl;
     } catch (const RunFileError& ex) {
       reason = std::string("run file not written: ") + ex.what();
     } catch (const std::exception& ex) {
@@ -386,7 +399,8 @@ SweepOutcome run_sweep(const Sweep& sweep, const SweepOptions& opt) {
   std::lock_guard sl(st.mutex);
   st.manifest_dirty = true;
   st.write_manifest();
-  out.ran = st.finished;
+  out.ran = st.finished - st.stopped;
+  out.stopped = st.stopped;
   for (const auto& e : st.entries) {
     if (e.status == EntryStatus::Complete) ++out.complete;
     if (e.status == EntryStatus::Failed) {

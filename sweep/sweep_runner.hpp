@@ -22,6 +22,9 @@ struct SweepOptions {
   double progress_interval_s = 5.0;  // least time between progress lines [s]
   // Wall seconds between a run's checkpoints (sweep/run.hpp, CheckpointOptions); <= 0: none.
   double checkpoint_every_s = kDefaultCheckpointEvery;
+  // May be null. Once true (a signal handler: SIGTERM, SIGINT), no run starts and the runs
+  // going write their checkpoints and stop; they stay pending for the next invocation.
+  const std::atomic<bool>* stop = nullptr;
 };
 
 struct SweepOutcome {
@@ -33,6 +36,7 @@ struct SweepOutcome {
   std::size_t parts_removed = 0;  // .part leftovers of killed runs removed
   std::size_t temps_removed = 0;  // manifest temporaries of killed invocations removed
   std::size_t joblog_added = 0;   // joblog lines restored for runs finished on disk without one
+  std::size_t stopped = 0;        // runs stopped part-way by SweepOptions::stop (pending again)
   int threads = 0;                // threads used
   double wall_s = 0;              // [s]
   std::vector<std::pair<std::string, std::string>> failures;  // (file, reason), run order

@@ -12,6 +12,7 @@
 #include <cstring>
 #include <filesystem>
 #include <thread>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -67,6 +68,64 @@ double run_until_checkpoint(const TempDir& dir, const std::string& log, double a
   }
 }
 
+// Every series but the wall time and every snapshot's wire, curvature and shell, bitwise.
+void expect_same_run(const std::string& reference, const std::string& run) {
+  SCOPED_TRACE(run);
+  const sweep::RunRecord a = sweep::read_run_file(reference);
+  const sweep::RunRecord b = sweep::read_run_file(run);
+  EXPECT_EQ(b.status, sweep::RunStatus::Complete);
+  ASSERT_EQ(a.series.size(), b.series.size());
+  for (std::size_t c = 0; c < a.series.size(); ++c) {
+    ASSERT_EQ(a.series[c].name, b.series[c].name);
+    if (a.series[c].name == "wall_s") continue;
+    ASSERT_EQ(a.series[c].values.size(), b.series[c].values.size()) << a.series[c].name;
+    EXPECT_EQ(std::memcmp(a.series[c].values.data(), b.series[c].values.data(),
+                          a.series[c].values.size() * sizeof(double)),
+              0)
+        << a.series[c].name;
+  }
+  ASSERT_EQ(a.snapshots.size(), b.snapshots.size());
+  for (std::size_t k = 0; k < a.snapshots.size(); ++k) {
+    EXPECT_EQ(a.snapshots[k].wire, b.snapshots[k].wire) << k;
+    EXPECT_EQ(a.snapshots[k].shell_vertices, b.snapshots[k].shell_vertices) << k;
+    EXPECT_EQ(a.snapshots[k].curvature, b.snapshots[k].curvature) << k;
+  }
+}
+
+// Starts `wirepack ARGS...` in `dir`, stderr into `log`, stdout to /dev/null.
+pid_t start(const TempDir& dir, const std::string& log, std::vector<std::string> args) {
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    if (::chdir(dir.path().c_str()) != 0) ::_exit(127);
+    if (!std::freopen(log.c_str(), "w", stderr) || !std::freopen("/dev/null", "w", stdout))
+      ::_exit(127);
+    std::vector<char*> argv{const_cast<char*>(WIREPACK_BINARY)};
+    for (auto& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    ::execv(WIREPACK_BINARY, argv.data());
+    ::_exit(127);
+  }
+  return pid;
+}
+
+// Waits until `log` contains `text` (true) or the process exits or 60 s pass (false).
+bool wait_for_text(pid_t pid, const std::string& log, const std::string& text) {
+  const auto t0 = clock_type::now();
+  while (clock_type::now() - t0 < std::chrono::seconds(60)) {
+    if (read_text(log).find(text) != std::string::npos) return true;
+    int status = 0;
+    if (::waitpid(pid, &status, WNOHANG) == pid) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  return false;
+}
+
+int exit_code(pid_t pid) {
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
 TEST(CliCheckpoint, KilledRunResumesBitwise) {
   TempDir dir;
   dir.write("s.json", kScene);
@@ -86,28 +145,82 @@ TEST(CliCheckpoint, KilledRunResumesBitwise) {
   EXPECT_NE(last.err.find("resumed from the checkpoint at l = "), std::string::npos) << last.err;
   EXPECT_FALSE(fs::exists(dir / "run.h5.ckpt"));
 
-  const sweep::RunRecord a = sweep::read_run_file(dir / "ref.h5");
-  const sweep::RunRecord b = sweep::read_run_file(dir / "run.h5");
-  EXPECT_EQ(b.status, sweep::RunStatus::Complete);
-  ASSERT_EQ(a.series.size(), b.series.size());
-  for (std::size_t c = 0; c < a.series.size(); ++c) {
-    ASSERT_EQ(a.series[c].name, b.series[c].name);
-    if (a.series[c].name == "wall_s") continue;
-    ASSERT_EQ(a.series[c].values.size(), b.series[c].values.size()) << a.series[c].name;
-    EXPECT_EQ(std::memcmp(a.series[c].values.data(), b.series[c].values.data(),
-                          a.series[c].values.size() * sizeof(double)),
-              0)
-        << a.series[c].name;
-  }
-  ASSERT_EQ(a.snapshots.size(), b.snapshots.size());
-  for (std::size_t k = 0; k < a.snapshots.size(); ++k) {
-    EXPECT_EQ(a.snapshots[k].wire, b.snapshots[k].wire) << k;
-    EXPECT_EQ(a.snapshots[k].shell_vertices, b.snapshots[k].shell_vertices) << k;
-    EXPECT_EQ(a.snapshots[k].curvature, b.snapshots[k].curvature) << k;
-  }
+  expect_same_run(dir / "ref.h5", dir / "run.h5");
   // The wall time goes on from the checkpoint: the resumed file's last wall time covers the
   // killed invocations' work up to their last checkpoints as well.
-  EXPECT_GT(b.find_series("wall_s")->values.back(), 0.0);
+  EXPECT_GT(sweep::read_run_file(dir / "run.h5").find_series("wall_s")->values.back(), 0.0);
+}
+
+}  // namespace
+}  // namespace wirepack
+
+namespace wirepack {
+namespace {
+
+// SIGTERM (a batch system's time limit) stops a run at once with its checkpoint, whatever the
+// checkpoint interval: exit 128 + 15, no run file; the same command resumes it bitwise.
+TEST(CliCheckpoint, SigtermStopsARunWithItsCheckpoint) {
+  TempDir dir;
+  // kScene to l = 14: ~6 s on one idle core, long enough for a progress line (every 2 s).
+  std::string scene = kScene;
+  scene.replace(scene.find("\"l_max\": 7"), 10, "\"l_max\": 14");
+  dir.write("s.json", scene);
+  const auto ref = run_wirepack(dir, "run s.json --out ref.h5 --checkpoint-every 0");
+  ASSERT_EQ(ref.code, 0) << ref.err;
+
+  const std::string log = dir / "log";
+  const pid_t pid = start(dir, log, {"run", "s.json", "--out", "run.h5"});  // default interval
+  ASSERT_TRUE(wait_for_text(pid, log, "ETA")) << read_text(log);  // a progress line, not the last
+  ::kill(pid, SIGTERM);
+  EXPECT_EQ(exit_code(pid), 128 + SIGTERM) << read_text(log);
+  EXPECT_NE(read_text(log).find("checkpoint run.h5.ckpt written"), std::string::npos)
+      << read_text(log);
+  EXPECT_TRUE(fs::exists(dir / "run.h5.ckpt"));
+  EXPECT_FALSE(fs::exists(dir / "run.h5"));
+  EXPECT_FALSE(fs::exists(dir / "run.h5.part"));
+
+  const auto last = run_wirepack(dir, "run s.json --out run.h5");
+  ASSERT_EQ(last.code, 0) << last.err;
+  EXPECT_NE(last.err.find("resumed from the checkpoint at l = "), std::string::npos) << last.err;
+  EXPECT_FALSE(fs::exists(dir / "run.h5.ckpt"));
+  expect_same_run(dir / "ref.h5", dir / "run.h5");
+}
+
+// SIGINT (Ctrl-C) stops a sweep: no new run starts, the runs going keep their checkpoints and
+// stay pending in the manifest, exit 128 + 2; rerunning finishes every run bitwise as a sweep
+// never interrupted.
+TEST(CliCheckpoint, SigintStopsASweep) {
+  TempDir dir;
+  dir.write("w.json", R"({"name": "w", "base": {"rho": 10, "shell": "rigid", "l_max": 10,
+      "numerics": "fast"}, "grid": {"mu_s": [0, 0.5]}, "seeds": 2})");
+  const auto ref = run_wirepack(dir, "sweep w.json --out ref --threads 2 --checkpoint-every 0");
+  ASSERT_EQ(ref.code, 0) << ref.err;
+
+  const std::string log = dir / "log";
+  const pid_t pid = start(dir, log, {"sweep", "w.json", "--out", "out", "--threads", "2"});
+  ASSERT_TRUE(wait_for_text(pid, log, "running 4 on 2 threads")) << read_text(log);
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  ::kill(pid, SIGINT);
+  EXPECT_EQ(exit_code(pid), 128 + SIGINT) << read_text(log);
+  EXPECT_NE(read_text(log).find("stopped by signal 2"), std::string::npos) << read_text(log);
+  int checkpoints = 0, finished = 0;
+  for (const auto& e : fs::directory_iterator(dir / "out/runs")) {
+    checkpoints += e.path().extension() == ".ckpt";
+    finished += e.path().extension() == ".h5";
+  }
+  EXPECT_GE(checkpoints, 1) << read_text(log);
+  EXPECT_LT(finished, 4);
+  const std::string manifest = read_text(dir / "out/manifest.json");
+  EXPECT_NE(manifest.find("\"pending\": " + std::to_string(4 - finished)), std::string::npos)
+      << manifest;
+
+  const auto again = run_wirepack(dir, "sweep w.json --out out --threads 2");
+  ASSERT_EQ(again.code, 0) << again.err;
+  EXPECT_NE(again.err.find("resumed from its checkpoint"), std::string::npos) << again.err;
+  for (const auto& e : fs::directory_iterator(dir / "ref/runs"))
+    expect_same_run(e.path(), dir / "out/runs" / e.path().filename());
+  for (const auto& e : fs::directory_iterator(dir / "out/runs"))
+    EXPECT_EQ(e.path().extension(), ".h5") << e.path();
 }
 
 }  // namespace
