@@ -172,6 +172,7 @@ RunOutcome run_scene(const Scene& scene, const std::string& out_path, std::ostre
     const bool resumed = checkpoints && std::filesystem::exists(ckpt_path, ec) && resume(sim);
     if (progress && !out.checkpoint_note.empty()) *progress << out.checkpoint_note << std::endl;
     if (resumed) {
+      if (checkpoint.on_resume) checkpoint.on_resume(sim->l());
       if (progress)
         *progress << "resumed from the checkpoint at l = "
                   << format_number(std::round(sim->l() * 1e3) / 1e3) << std::endl;

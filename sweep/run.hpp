@@ -35,6 +35,7 @@ struct RunOutcome {
 struct CheckpointOptions {
   double every_s = 0;  // [s]
   const std::atomic<bool>* stop = nullptr;
+  std::function<void(double l)> on_resume = {};  // called once resumed, with the l reached
 };
 inline constexpr double kDefaultCheckpointEvery = 300.0;  // [s]
 

@@ -226,9 +226,16 @@ void execute(SweepState& st, ManifestEntry& e, const SweepOptions& opt) noexcept
     double run_wall = -1;  // the run's whole wall time, a resumed run's earlier part included
     try {
       // The run's own progress is not shown inside a sweep (null stream).
+      // A resumed run says so when it resumes (its own progress is not shown).
+      const auto on_resume = [&](double l) {
+        if (!opt.progress) return;
+        std::lock_guard lock(st.mutex);
+        *opt.progress << e.run->file << ": resumed from its checkpoint at l = "
+                      << format_number(std::round(l * 1e3) / 1e3) << std::endl;
+      };
       const RunOutcome r = run_scene(
           e.run->scene, path, nullptr, [&st] { return st.threads_per_run(); }, recorded_series(),
-          CheckpointOptions{opt.checkpoint_every_s, opt.stop});
+          CheckpointOptions{opt.checkpoint_every_s, opt.stop, on_resume});
       if (r.status == RunStatus::Running) {
         // Stopped part-way: pending again, to resume from its checkpoint next time.
         std::lock_guard lock(st.mutex);
@@ -245,9 +252,6 @@ void execute(SweepState& st, ManifestEntry& e, const SweepOptions& opt) noexcept
       run_wall = r.wall_s;
       std::lock_guard lock(st.mutex);
       if (!r.checkpoint_note.empty()) st.warn(e.run->file + ": " + r.checkpoint_note);
-      if (r.resumed_l >= 0 && opt.progress)
-        *opt.progress << e.run->file << ": resumed from its checkpoint at l = "
-                      << format_number(std::round(r.resumed_l * 1e3) / 1e3) << std::endl;
     } catch (const RunFileError& ex) {
       reason = std::string("run file not written: ") + ex.what();
     } catch (const std::exception& ex) {
