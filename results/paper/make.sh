@@ -6,6 +6,9 @@
 #                                                  fig1_3), seeds in stages: every point gets seeds
 #                                                  1-2 first, then 3-5, then the rest, so that an
 #                                                  interrupted campaign still has whole curves
+#   bash results/paper/make.sh stop [FIG...]       stops the sweeps running on FIG (all figures by
+#                                                  default) with SIGTERM: each run going writes its
+#                                                  checkpoint at once; waits until they are gone
 #   bash results/paper/make.sh analyze [FIG...]    tables and plots from FIG/sweep into FIG/analysis
 #   bash results/paper/make.sh pictures FIG        every snapshot of FIG's runs drawn by wirepack
 #                                                  render (ParaView; wire at half its radius,
@@ -65,6 +68,28 @@ run() {  # FIG THREADS
   done
 }
 
+sweep_pids() {  # FIG: the wirepack processes sweeping into FIG/sweep (not their shells)
+  local p
+  for p in $(pgrep -f -- "--out $here/$1/sweep( |\$)" || true); do
+    [ "$(cat "/proc/$p/comm" 2> /dev/null)" = wirepack ] && echo "$p"
+  done
+  return 0
+}
+
+stop() {  # FIG: SIGTERM to the sweeps writing into FIG/sweep, then wait for them to exit
+  local f=$1 pids
+  pids=$(sweep_pids "$f")
+  [ -n "$pids" ] || { echo "== $f: no sweep running"; return 0; }
+  echo "== $f: stopping $(echo "$pids" | wc -w) sweep(s) (their runs write checkpoints)"
+  kill -TERM $pids 2> /dev/null || true
+  for _ in $(seq 1 600); do
+    [ -n "$(sweep_pids "$f")" ] || { echo "== $f: stopped"; return 0; }
+    sleep 0.1
+  done
+  echo "make.sh: the sweep on $f did not stop within 60 s" >&2
+  return 1
+}
+
 analyze() {  # FIG
   local f=$1
   [ -d "$here/$f/sweep/runs" ] || { echo "== $f: no run data yet"; return 0; }
@@ -92,6 +117,10 @@ case "$cmd" in
     [ $# -ge 2 ] || { echo "usage: make.sh run FIG [THREADS]" >&2; exit 2; }
     run "$2" "${3:-$(nproc)}"
     ;;
+  stop)
+    shift
+    for f in "${@:-${figs[@]}}"; do stop "$f"; done
+    ;;
   analyze)
     shift
     for f in "${@:-${figs[@]}}"; do analyze "$f"; done
@@ -101,7 +130,7 @@ case "$cmd" in
     pictures "$2"
     ;;
   *)
-    echo "usage: make.sh status | run FIG [THREADS] | analyze [FIG...] | pictures FIG" >&2
+    echo "usage: make.sh status | run FIG [THREADS] | stop [FIG...] | analyze [FIG...] | pictures FIG" >&2
     exit 2
     ;;
 esac
