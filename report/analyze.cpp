@@ -105,7 +105,7 @@ AnalyzeResult analyze_sweep(const AnalyzeOptions& o) {
   // Plots: scripts always, PNGs where gnuplot is present.
   std::vector<PlotJob> jobs;
   for (const auto& v : views)
-    if (auto job = view_plot(a, v)) jobs.push_back(std::move(*job));
+    if (auto job = view_plot(a, v, slices)) jobs.push_back(std::move(*job));
   for (auto& [name, script] : phase_diagram_plots(a.axes, crit_points, slices))
     jobs.push_back({name, script});
   for (std::size_t i = 0; i < a.points.size(); ++i) {

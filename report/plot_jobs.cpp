@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <numbers>
 
+#include "analysis/critical.hpp"
 #include "analysis/stats.hpp"
 #include "report/csv_table.hpp"
 #include "report/plots.hpp"
@@ -43,7 +44,44 @@ std::string rounded_window_text(const LWindow& w) {
 
 }  // namespace
 
-std::optional<PlotJob> view_plot(const Analysis& a, const View& v) {
+namespace {
+
+// The fitted transition of a slice as a curve over its range, in x (200 points, log-spaced when
+// the fit is in log10 x); empty without a transition model.
+std::vector<std::array<double, 3>> model_rows(const CriticalSlice& slice) {
+  const analysis::CriticalResult& f = slice.fit;
+  std::vector<std::array<double, 3>> rows;
+  if (f.model.empty() || !std::isfinite(f.x_min) || !std::isfinite(f.x_max)) return rows;
+  const bool log_x = slice.options.log_x;
+  const double u0 = log_x ? std::log10(f.x_min) : f.x_min;
+  const double u1 = log_x ? std::log10(f.x_max) : f.x_max;
+  for (int k = 0; k <= 200; ++k) {
+    const double u = u0 + (u1 - u0) * k / 200;
+    const double D = f.model == "continuous" ? analysis::continuous_model(u, f.continuous)
+                                             : analysis::smooth_model(u, f.smooth);
+    rows.push_back({log_x ? std::pow(10.0, u) : u, D, NaN});
+  }
+  return rows;
+}
+
+// x range of the inset: from the second grid value below x_c to the second above (or the ends),
+// widened to hold x_c's interval.
+std::array<double, 2> inset_range(std::vector<double> xs, const analysis::CriticalResult& f) {
+  std::sort(xs.begin(), xs.end());
+  xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
+  const auto above = std::upper_bound(xs.begin(), xs.end(), f.x_c);
+  const std::size_t i = static_cast<std::size_t>(above - xs.begin());  // first grid value > x_c
+  double lo = xs[i >= 2 ? i - 2 : 0];
+  double hi = xs[std::min(xs.size() - 1, i + 1)];
+  if (std::isfinite(f.x_c_lo)) lo = std::min(lo, f.x_c_lo);
+  if (std::isfinite(f.x_c_hi)) hi = std::max(hi, f.x_c_hi);
+  return {lo, hi};
+}
+
+}  // namespace
+
+std::optional<PlotJob> view_plot(const Analysis& a, const View& v,
+                                 const std::vector<CriticalSlice>& slices) {
   using plots::Curve;
   std::vector<double> xs;
   for (const auto& p : a.points) {
@@ -51,31 +89,85 @@ std::optional<PlotJob> view_plot(const Analysis& a, const View& v) {
     if (!x.is_number()) return {};  // only numeric parameters are drawn
     xs.push_back(x.get<double>());
   }
+  const std::string op = a.settings.order_parameter;  // D, D_chord or D_kappa
+  const bool literal_too = op != "D";
   plots::Panel panel;
-  panel.title =
-      "D = max of D(l) over l in " + window_text(a.settings.D_window) + ": mean and SEM over seeds";
+  panel.title = op + " = max of " + op + "(l) over l in " + window_text(a.settings.D_window) +
+                ": mean and SEM over seeds";
   panel.xlabel = v.name;
-  panel.ylabel = "D";
+  panel.ylabel = op;
   panel.y_from_zero = true;
   const auto [lo, hi] = std::minmax_element(xs.begin(), xs.end());
   panel.logx = *lo > 0 && *hi >= 100 * *lo;
-  // One curve per combination of the other swept parameters (rows are sorted by them).
+  // One curve per combination of the other swept parameters (rows are sorted by them); with
+  // another order parameter, the literal D of each combination after them.
+  std::vector<Curve> literal;
   std::string current = "\x01";
   for (const std::size_t i : v.order) {
     const GridPoint& p = a.points[i];
     const std::string title = describe(p, v.others);
     if (title != current) {
-      panel.curves.push_back({title, Curve::Style::ErrorLines, {}});
+      // Named in the key when the literal D is beside it.
+      const std::string named = !literal_too ? title : title.empty() ? op : title + ", " + op;
+      panel.curves.push_back({named, Curve::Style::ErrorLines, {}});
+      literal.push_back(
+          {title.empty() ? "literal D" : title + ", literal D", Curve::Style::ErrorLines, {}});
       current = title;
     }
-    const auto m = analysis::mean_sem(values(p, &RunData::D));
-    panel.curves.back().rows.push_back({leaf(p, v.pointer).get<double>(), m.mean, m.sem});
+    const double x = leaf(p, v.pointer).get<double>();
+    const auto m = analysis::mean_sem(values(p, order_parameter_field(op)));
+    panel.curves.back().rows.push_back({x, m.mean, m.sem});
+    const auto d = analysis::mean_sem(values(p, &RunData::D));
+    literal.back().rows.push_back({x, d.mean, d.sem});
+  }
+  if (literal_too) panel.curves.insert(panel.curves.end(), literal.begin(), literal.end());
+
+  // The fitted transition along this parameter, when it is the only one swept.
+  std::vector<plots::Panel> panels;
+  const CriticalSlice* slice = nullptr;
+  for (const auto& s : slices)
+    if (v.others.empty() && s.axis == v.pointer && s.at.empty()) slice = &s;
+  const auto model = slice ? model_rows(*slice) : std::vector<std::array<double, 3>>{};
+  if (!model.empty() && std::isfinite(slice->fit.x_c)) {
+    const analysis::CriticalResult& f = slice->fit;
+    // 3 significant digits: a key entry wider than the panel hides the whole key.
+    const auto g3 = [](double x) {
+      char text[32];
+      std::snprintf(text, sizeof(text), "%.3g", x);
+      return std::string(text);
+    };
+    std::string fit_title = "fit: " + v.name + "_c = " + g3(f.x_c);
+    if (std::isfinite(f.x_c_lo) && std::isfinite(f.x_c_hi))
+      fit_title += " [" + g3(f.x_c_lo) + ", " + g3(f.x_c_hi) + "]";
+    const Curve fit{fit_title, Curve::Style::Lines, model};
+    panel.curves.insert(panel.curves.begin() + 1, fit);
+    panel.vlines = {f.x_c};
+    if (std::isfinite(f.x_c_lo) && std::isfinite(f.x_c_hi)) panel.bands = {{f.x_c_lo, f.x_c_hi}};
+    // The inset: the order parameter and the fit about x_c, x_c's interval shaded.
+    plots::Panel inset;
+    inset.title = "about " + v.name + "_c (" + f.model + " model)";
+    inset.key = "off";
+    inset.logx = panel.logx;
+    inset.curves = {panel.curves[0], fit};
+    inset.vlines = panel.vlines;
+    inset.bands = panel.bands;
+    inset.xrange = inset_range(xs, f);
+    // The inset goes into the upper corner on the coiled (low) side, so it hides no data: D
+    // rises across x_c (mu_s) or falls (eps); the key below the panel.
+    const auto& rows = panel.curves[0].rows;
+    const bool rising = rows.front()[1] <= rows.back()[1];
+    panel.key = "outside bottom center horizontal";
+    panel.place = std::array<double, 4>{0, 0, 1, 1};
+    inset.place = std::array<double, 4>{rising ? 0.13 : 0.53, 0.45, 0.42, 0.42};
+    panels = {panel, inset};
+  } else {
+    panels = {panel};
   }
   PlotJob job;
   job.name = "D_vs_" + v.name;
-  job.script =
-      plots::script("D against " + v.name + " (paper Fig. 5); data: ../" + job.name + ".csv", "",
-                    {panel}, 1, 1, job.name + ".png", 800, 600);
+  job.script = plots::script(op + " against " + v.name + " (paper Fig. 5); data: ../" + job.name +
+                                 ".csv" + (model.empty() ? "" : ", ../critical.csv"),
+                             "", panels, 1, 1, job.name + ".png", 800, 600);
   return job;
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "report/critical_table.hpp"
 #include "report/reductions.hpp"
 
 namespace wirepack::report {
@@ -16,9 +17,13 @@ struct PlotJob {
   std::string script;  // gnuplot script text
 };
 
-// D against a swept parameter, one curve per combination of the others; none when the
-// parameter is not numeric.
-std::optional<PlotJob> view_plot(const Analysis& a, const View& v);
+// The order parameter (settings.order_parameter; the literal D beside it when that is another)
+// against a swept parameter, one curve per combination of the others; none when the parameter
+// is not numeric. With no other swept parameter and a transition fitted along it (the slice of
+// `slices` for this axis): the fitted model, x_c with its interval, and an inset magnified
+// about x_c (paper Fig. 5b).
+std::optional<PlotJob> view_plot(const Analysis& a, const View& v,
+                                 const std::vector<CriticalSlice>& slices = {});
 // The six scaling laws of point i with their fits.
 PlotJob scaling_plot(const Analysis& a, std::size_t i, const MeanSeries& m,
                      const std::vector<ExponentFit>& fits);

@@ -94,7 +94,10 @@ std::string script(const std::string& comment, const std::string& page_title,
     }
   }
   const bool multi = panels.size() > 1;
-  if (multi)
+  const bool placed = multi && panels.front().place.has_value();
+  if (placed)
+    s << "set multiplot title " << quoted(page_title) << '\n';
+  else if (multi)
     s << "set multiplot layout " << rows << "," << cols << " title " << quoted(page_title) << '\n';
   for (std::size_t p = 0; p < panels.size(); ++p) {
     const Panel& panel = panels[p];
@@ -103,6 +106,28 @@ std::string script(const std::string& comment, const std::string& page_title,
       << quoted(multi || page_title.empty() ? panel.title : page_title + "\n" + panel.title) << '\n'
       << "set xlabel " << quoted(panel.xlabel) << '\n'
       << "set ylabel " << quoted(panel.ylabel) << '\n';
+    int objects = 0;  // gnuplot objects of this panel (drawn in order of their tags)
+    if (placed && panel.place) {
+      const auto& q = *panel.place;
+      s << "set origin " << format_number(q[0]) << ", " << format_number(q[1]) << '\n'
+        << "set size " << format_number(q[2]) << ", " << format_number(q[3]) << '\n';
+      // An inset hides what is under it.
+      if (p > 0)
+        s << "set object " << ++objects << " rect from screen " << format_number(q[0])
+          << ", screen " << format_number(q[1]) << " to screen " << format_number(q[0] + q[2])
+          << ", screen " << format_number(q[1] + q[3])
+          << " behind fillcolor rgb \"white\" fillstyle solid 1.0 noborder\n";
+    }
+    if (panel.xrange)
+      s << "set xrange [" << format_number((*panel.xrange)[0]) << ":"
+        << format_number((*panel.xrange)[1]) << "]\n";
+    for (std::size_t b = 0; b < panel.bands.size(); ++b)
+      s << "set object " << ++objects << " rect from " << format_number(panel.bands[b][0])
+        << ", graph 0 to " << format_number(panel.bands[b][1])
+        << ", graph 1 behind fillcolor rgb \"#e4e4e4\" fillstyle solid 1.0 noborder\n";
+    for (const double x : panel.vlines)
+      s << "set arrow from " << format_number(x) << ", graph 0 to " << format_number(x)
+        << ", graph 1 nohead dashtype 2 linecolor rgb \"#505050\"\n";
     std::vector<std::size_t> drawn;
     for (std::size_t c = 0; c < panel.curves.size(); ++c)
       if (!drawable(panel, panel.curves[c]).empty()) drawn.push_back(c);

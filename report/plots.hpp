@@ -3,6 +3,7 @@
 // a script can be edited and rerun alone: `gnuplot NAME.gp` writes NAME.png) and their
 // rendering to PNG through a temporary name and a rename.
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,13 @@ struct Panel {
   bool equal_axes = false;       // one unit is as long on x as on y (pictures of packings)
   std::string key = "top left";  // where the key goes (gnuplot `set key` position)
   std::vector<Curve> curves;
+  // Where the panel sits on the page, as fractions of it: origin x, y, width, height (an inset
+  // over another panel); empty: the layout's place. Any placed panel makes the page a free
+  // multiplot, so every panel of such a page is placed.
+  std::optional<std::array<double, 4>> place;
+  std::optional<std::array<double, 2>> xrange;  // x range drawn (empty: automatic)
+  std::vector<double> vlines;                   // dashed vertical lines at these x
+  std::vector<std::array<double, 2>> bands;     // shaded x intervals [lo, hi] behind the data
 };
 
 // A script drawing `panels` in a rows x cols layout under `page_title` (one panel: no multiplot,
