@@ -139,13 +139,6 @@ bool inspect(SweepState& st, ManifestEntry& e, bool retry_failed, SweepOutcome& 
     // A killed run's partial file; the run starts over (from its checkpoint, if it has one).
     if (fs::remove(path + ".part", ec)) ++out.parts_removed;
   }
-  // Temporaries of checkpoints being written when a run was killed.
-  const fs::path run_path(path);
-  const std::string tmp_prefix = checkpoint_path(run_path.filename().string()) + ".tmp.";
-  for (const auto& f : fs::directory_iterator(run_path.parent_path(), ec)) {
-    std::error_code rm;
-    if (f.path().filename().string().rfind(tmp_prefix, 0) == 0) fs::remove(f.path(), rm);
-  }
   if (!fs::exists(path, ec)) return true;
   RunRecord rec;
   try {
@@ -173,6 +166,20 @@ bool inspect(SweepState& st, ManifestEntry& e, bool retry_failed, SweepOutcome& 
   }
   ++out.found;
   return false;
+}
+
+// Removes the checkpoint temporaries (RUN.h5.ckpt.tmp.<pid>) of this shard's runs that killed
+// invocations left (one scan of DIR/runs; other shards' runs are not touched).
+void remove_checkpoint_temporaries(const std::string& dir, const std::vector<ManifestEntry>& mine) {
+  std::set<std::string> runs;
+  for (const auto& e : mine) runs.insert(fs::path(e.run->file).filename().string());
+  std::error_code ec;
+  for (const auto& f : fs::directory_iterator(fs::path(dir) / "runs", ec)) {
+    const std::string name = f.path().filename().string();
+    const auto at = name.find(".ckpt.tmp.");
+    std::error_code rm;
+    if (at != std::string::npos && runs.contains(name.substr(0, at))) fs::remove(f.path(), rm);
+  }
 }
 
 // Removes the manifest temporaries (MANIFEST.tmp.<pid>) that killed invocations on this shard
@@ -298,6 +305,7 @@ SweepOutcome run_sweep(const Sweep& sweep, const SweepOptions& opt) {
   out.runs = st.entries.size();
 
   // Resume: what is on disk decides what runs (the manifest is only a report).
+  remove_checkpoint_temporaries(opt.dir, st.entries);
   std::vector<ManifestEntry*> todo;
   for (auto& e : st.entries)
     if (inspect(st, e, opt.retry_failed, out)) todo.push_back(&e);
