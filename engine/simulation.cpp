@@ -229,89 +229,78 @@ struct Simulation::Impl {
   // Checkpoint layout; bump it whenever what save() writes changes.
   static constexpr int kStateLayout = 1;
 
-  void save(StateWriter& out) const {
-    out.tag("SIMU");
-    out.put(kStateLayout);
-    out.put(static_cast<std::uint64_t>(assembly.terms.size()));
-    for (const auto& t : assembly.terms) out.put(t->name());
-    out.put(time);
-    out.put(steps);
-    out.put(feeder_work);
-    out.put(feeder_power);
-    out.put(next_inside_check);
-    out.tag("ROD_");
-    out.put(state.n_free);
-    out.put(state.x);
-    out.put(state.v);
-    out.put(state.rest_length);
-    out.put(state.theta);
-    out.put(state.omega);
-    out.put(state.ref1);
-    out.put(state.ref_tangent);
-    out.put(state.ref_twist);
-    out.put(state.shell_x);
-    out.put(state.shell_v);
-    out.put(term_energy);
-    out.put(term_omega2);
-    integrator.save(out);
-    feeder.save(out);
-    for (const auto& t : assembly.terms) t->save(out);
-    out.tag("END_");
-  }
-
-  void load(StateReader& in) {
-    in.tag("SIMU");
-    if (const int layout = in.get<int>(); layout != kStateLayout)
-      in.fail("layout " + std::to_string(layout) + ", this build reads " +
+  // save() and load() in one (engine/state_archive.hpp); Self: Impl or const Impl.
+  template <class Self, class Archive>
+  static void serialize(Self& m, Archive& ar) {
+    ar.tag("SIMU");
+    int layout = kStateLayout;
+    ar(layout);
+    if (layout != kStateLayout)
+      ar.fail("layout " + std::to_string(layout) + ", this build reads " +
               std::to_string(kStateLayout));
-    if (in.get<std::uint64_t>() != assembly.terms.size()) in.fail("another set of terms");
-    for (const auto& t : assembly.terms) {
-      std::string name;
-      in.get(name);
-      if (name != t->name())
-        in.fail("term '" + name + "' where this scene has '" + t->name() + "'");
+    // The scene's terms by name: a state of another scene is refused here.
+    std::vector<std::string> names;
+    for (const auto& t : m.assembly.terms) names.push_back(t->name());
+    const std::size_t n_terms = names.size();
+    ar.count(names, 1000);
+    for (std::size_t k = 0; k < names.size(); ++k) {
+      std::string name = k < n_terms ? m.assembly.terms[k]->name() : "";
+      ar(name);
+      const std::string here = k < n_terms ? m.assembly.terms[k]->name() : "no term";
+      if (k >= n_terms || name != here)
+        ar.fail("term " + name + " where this scene has " + here);
     }
-    in.get(time);
-    in.get(steps);
-    in.get(feeder_work);
-    in.get(feeder_power);
-    in.get(next_inside_check);
-    in.tag("ROD_");
-    in.get(state.n_free);
-    in.get(state.x);
-    in.get(state.v);
-    in.get(state.rest_length);
-    in.get(state.theta);
-    in.get(state.omega);
-    in.get(state.ref1);
-    in.get(state.ref_tangent);
-    in.get(state.ref_twist);
-    in.get(state.shell_x);
-    in.get(state.shell_v);
-    const std::size_t n = state.x.size();
-    const bool twist = !state.theta.empty();
-    if (n < 2 || state.n_free < 0 || state.n_free > static_cast<int>(n) || state.v.size() != n ||
-        state.rest_length.size() != n - 1 ||
-        (twist && (state.theta.size() != n - 1 || state.omega.size() != n - 1 ||
-                   state.ref1.size() != n - 1 || state.ref_tangent.size() != n - 1 ||
-                   state.ref_twist.size() != n)) ||
-        twist != params.twist_enabled() ||
-        state.shell_x.size() != (assembly.mesh ? assembly.mesh->rest.size() : 0) ||
-        state.shell_v.size() != state.shell_x.size())
-      in.fail("the rod or shell does not fit this scene");
-    in.get(term_energy);
-    in.get(term_omega2);
-    if (term_energy.size() != assembly.terms.size() || term_omega2.size() != term_energy.size())
-      in.fail("per-term values of another scene");
-    integrator.load(in);
-    feeder.load(in);
-    for (auto& t : assembly.terms) t->load(in);
-    in.tag("END_");
-    in.expect_end();
-    // Rebuilt from the state by the next evaluation.
-    mass_nodes = -1;
-    twist_mass_nodes = -1;
-    inside.clear();
+    if (names.size() != n_terms) ar.fail("another set of terms");
+    ar(m.time);
+    ar(m.steps);
+    ar(m.feeder_work);
+    ar(m.feeder_power);
+    ar(m.next_inside_check);
+    ar.tag("ROD_");
+    auto& st = m.state;
+    ar(st.n_free);
+    ar(st.x);
+    ar(st.v);
+    ar(st.rest_length);
+    ar(st.theta);
+    ar(st.omega);
+    ar(st.ref1);
+    ar(st.ref_tangent);
+    ar(st.ref_twist);
+    ar(st.shell_x);
+    ar(st.shell_v);
+    const std::size_t n = st.x.size();
+    const bool twist = !st.theta.empty();
+    if (n < 2 || st.n_free < 0 || st.n_free > static_cast<int>(n) || st.v.size() != n ||
+        st.rest_length.size() != n - 1 ||
+        (twist &&
+         (st.theta.size() != n - 1 || st.omega.size() != n - 1 || st.ref1.size() != n - 1 ||
+          st.ref_tangent.size() != n - 1 || st.ref_twist.size() != n)) ||
+        twist != m.params.twist_enabled() ||
+        st.shell_x.size() != (m.assembly.mesh ? m.assembly.mesh->rest.size() : 0) ||
+        st.shell_v.size() != st.shell_x.size())
+      ar.fail("the rod or shell does not fit this scene");
+    ar(m.term_energy);
+    ar(m.term_omega2);
+    if (m.term_energy.size() != n_terms || m.term_omega2.size() != n_terms)
+      ar.fail("per-term values of another scene");
+    if constexpr (Archive::kLoading) {
+      m.integrator.load(ar);
+      m.feeder.load(ar);
+      for (auto& t : m.assembly.terms) t->load(ar);
+    } else {
+      m.integrator.save(ar);
+      m.feeder.save(ar);
+      for (const auto& t : m.assembly.terms) t->save(ar);
+    }
+    ar.tag("END_");
+    if constexpr (Archive::kLoading) {
+      ar.expect_end();
+      // Rebuilt from the state by the next evaluation.
+      m.mass_nodes = -1;
+      m.twist_mass_nodes = -1;
+      m.inside.clear();
+    }
   }
 
   // The energy of the last evaluation summed per term type.
@@ -363,13 +352,13 @@ void Simulation::advance_to(double l_target) {
 
 std::string Simulation::save_state() const {
   StateWriter out;
-  impl_->save(out);
+  Impl::serialize(*impl_, out);
   return out.take();
 }
 
 void Simulation::restore_state(std::string_view bytes) {
   StateReader in(bytes);
-  impl_->load(in);
+  Impl::serialize(*impl_, in);
 }
 
 const SceneParams& Simulation::params() const {

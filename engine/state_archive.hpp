@@ -4,6 +4,11 @@
 // order; the reader checks every tag and every length, so a checkpoint of another layout or a
 // truncated one is refused with a reason instead of restoring garbage. Values are stored in the
 // machine's byte order, bit for bit (a restored double is the same double).
+//
+// Writer and reader share one interface, so a part describes its state once, in a template
+// run with either (`serialize(self, archive)`: `archive.tag("NAME"); archive(member); ...`),
+// and its save and load cannot disagree on the order: `archive(x)` writes x or reads into it,
+// `archive.count(v, limit)` writes v's size or reads one (at most `limit`) and resizes v.
 #include <array>
 #include <cstdint>
 #include <cstring>
@@ -26,6 +31,15 @@ class CheckpointError : public std::runtime_error {
 
 class StateWriter {
  public:
+  static constexpr bool kLoading = false;
+  template <class T>
+  void operator()(const T& v) {
+    put(v);
+  }
+  template <class V>
+  void count(const V& v, std::uint64_t /*limit*/) {
+    put(static_cast<std::uint64_t>(v.size()));
+  }
   // A section's start: four letters the reader expects at the same place.
   void tag(const char (&t)[5]) { raw(t, 4); }
   template <class T>
@@ -58,6 +72,9 @@ class StateWriter {
     put(static_cast<std::uint64_t>(v.size()));
     for (const auto& row : v) put(row);
   }
+  [[noreturn]] void fail(const std::string& why) const {
+    throw CheckpointError("checkpoint state: " + why);
+  }
   const std::string& bytes() const { return buf_; }
   std::string take() { return std::move(buf_); }
 
@@ -68,7 +85,18 @@ class StateWriter {
 
 class StateReader {
  public:
+  static constexpr bool kLoading = true;
   explicit StateReader(std::string_view bytes) : buf_(bytes) {}
+  template <class T>
+  void operator()(T& v) {
+    get(v);
+  }
+  template <class V>
+  void count(V& v, std::uint64_t limit) {
+    const auto n = get<std::uint64_t>();
+    if (n > limit) fail(std::to_string(n) + " elements, at most " + std::to_string(limit));
+    v.resize(static_cast<std::size_t>(n));
+  }
   void tag(const char (&t)[5]) {
     char got[4];
     raw(got, 4);

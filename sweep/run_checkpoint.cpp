@@ -24,55 +24,47 @@ std::uint64_t fnv1a(std::string_view bytes) {
   return h;
 }
 
-void put_snapshot(StateWriter& out, const Snapshot& s) {
-  out.tag("SNAP");
-  out.put(s.l);
-  out.put(s.wire);
-  out.put(s.curvature);
-  out.put(s.shell_vertices);
-  out.put(s.shell_triangles);
-  out.put(s.wire_contacts);
-  out.put(s.shell_area_stretch);
-  out.put(s.shell_contact_force);
-  out.put(s.shell_clamped);
-}
-
-void get_snapshot(StateReader& in, Snapshot& s) {
-  in.tag("SNAP");
-  in.get(s.l);
-  in.get(s.wire);
-  in.get(s.curvature);
-  in.get(s.shell_vertices);
-  in.get(s.shell_triangles);
-  in.get(s.wire_contacts);
-  in.get(s.shell_area_stretch);
-  in.get(s.shell_contact_force);
-  in.get(s.shell_clamped);
+// The body of a checkpoint, written or read (engine/state_archive.hpp); C: RunCheckpoint or
+// const RunCheckpoint.
+template <class C, class Archive>
+void serialize(C& c, Archive& ar) {
+  ar(c.config);
+  ar(c.record.version);
+  ar(c.record.git);
+  ar(c.record.started);
+  ar(c.wall_s);
+  ar(c.next_row);
+  ar(c.next_snapshot);
+  ar(c.last_row_l);
+  ar(c.last_snapshot_l);
+  ar.tag("SERI");
+  ar.count(c.record.series, 10000);
+  for (auto& s : c.record.series) {
+    ar(s.name);
+    ar(s.values);
+  }
+  ar.count(c.record.snapshots, 1000000);
+  for (auto& s : c.record.snapshots) {
+    ar.tag("SNAP");
+    ar(s.l);
+    ar(s.wire);
+    ar(s.curvature);
+    ar(s.shell_vertices);
+    ar(s.shell_triangles);
+    ar(s.wire_contacts);
+    ar(s.shell_area_stretch);
+    ar(s.shell_contact_force);
+    ar(s.shell_clamped);
+  }
+  ar.tag("ENGN");
+  ar(c.engine);
 }
 
 }  // namespace
 
 void write_checkpoint(const RunCheckpoint& c, const std::string& path) {
   StateWriter out;
-  out.put(c.config);
-  out.put(c.record.version);
-  out.put(c.record.git);
-  out.put(c.record.started);
-  out.put(c.wall_s);
-  out.put(c.next_row);
-  out.put(c.next_snapshot);
-  out.put(c.last_row_l);
-  out.put(c.last_snapshot_l);
-  out.tag("SERI");
-  out.put(static_cast<std::uint64_t>(c.record.series.size()));
-  for (const Series& s : c.record.series) {
-    out.put(s.name);
-    out.put(s.values);
-  }
-  out.put(static_cast<std::uint64_t>(c.record.snapshots.size()));
-  for (const Snapshot& s : c.record.snapshots) put_snapshot(out, s);
-  out.tag("ENGN");
-  out.put(c.engine);
+  serialize(c, out);
   std::string file(kMagic, kMagicSize);
   const std::int32_t format = kCheckpointFormat;
   file.append(reinterpret_cast<const char*>(&format), sizeof format);
@@ -108,29 +100,7 @@ RunCheckpoint read_checkpoint(const std::string& path) {
   StateReader in(std::string_view(file).substr(body_start, body_end - body_start));
   RunCheckpoint c;
   try {
-    in.get(c.config);
-    in.get(c.record.version);
-    in.get(c.record.git);
-    in.get(c.record.started);
-    in.get(c.wall_s);
-    in.get(c.next_row);
-    in.get(c.next_snapshot);
-    in.get(c.last_row_l);
-    in.get(c.last_snapshot_l);
-    in.tag("SERI");
-    const auto n_series = in.get<std::uint64_t>();
-    if (n_series > 10000) in.fail(std::to_string(n_series) + " series");
-    c.record.series.resize(n_series);
-    for (Series& s : c.record.series) {
-      in.get(s.name);
-      in.get(s.values);
-    }
-    const auto n_snapshots = in.get<std::uint64_t>();
-    if (n_snapshots > 1000000) in.fail(std::to_string(n_snapshots) + " snapshots");
-    c.record.snapshots.resize(n_snapshots);
-    for (Snapshot& s : c.record.snapshots) get_snapshot(in, s);
-    in.tag("ENGN");
-    in.get(c.engine);
+    serialize(c, in);
     in.expect_end();
   } catch (const CheckpointError& e) {
     throw fail(e.what());

@@ -175,59 +175,51 @@ void FrictionHistory::forces(const std::vector<Query>& queries, std::vector<Vec3
   }
 }
 
-void FrictionHistory::Table::save(StateWriter& out) const {
-  out.tag("FRTB");
-  out.put(keys_);
-  for (std::size_t i = 0; i < keys_.size(); ++i) {
-    if (keys_[i] == kEmpty) continue;
-    const Entry& e = entries_[i];
-    out.put(e.F);
-    out.put(e.F_trial);
-    out.put(e.Fn);
-    out.put(e.Fn_trial);
-    out.put(static_cast<char>(e.sliding));
-    out.put(static_cast<char>(e.sliding_trial));
-    out.put(e.trial);
+template <class Self, class Archive>
+void FrictionHistory::Table::serialize(Self& t, Archive& ar) {
+  ar.tag("FRTB");
+  ar(t.keys_);  // the slots' layout as it is, so the restored table is the same table
+  const std::size_t capacity = t.keys_.size();
+  if constexpr (Archive::kLoading) {
+    if (capacity != 0 && (capacity < 64 || !std::has_single_bit(capacity)))
+      ar.fail("friction table capacity " + std::to_string(capacity));
+    t.entries_.assign(capacity, Entry{});
+    t.shift_ = capacity ? 64 - std::countr_zero(capacity) : 64;
+    t.size_ = 0;
+  }
+  for (std::size_t i = 0; i < capacity; ++i) {
+    if (t.keys_[i] == kEmpty) continue;
+    auto& e = t.entries_[i];
+    ar(e.F);
+    ar(e.F_trial);
+    ar(e.Fn);
+    ar(e.Fn_trial);
+    char sliding = e.sliding, sliding_trial = e.sliding_trial;
+    ar(sliding);
+    ar(sliding_trial);
+    ar(e.trial);
+    if constexpr (Archive::kLoading) {
+      e.sliding = sliding != 0;
+      e.sliding_trial = sliding_trial != 0;
+      ++t.size_;
+    }
   }
 }
 
-void FrictionHistory::Table::load(StateReader& in) {
-  in.tag("FRTB");
-  in.get(keys_);
-  const std::size_t capacity = keys_.size();
-  if (capacity != 0 && (capacity < 64 || !std::has_single_bit(capacity)))
-    in.fail("friction table capacity " + std::to_string(capacity));
-  entries_.assign(capacity, Entry{});
-  shift_ = capacity ? 64 - std::countr_zero(capacity) : 64;
-  size_ = 0;
-  for (std::size_t i = 0; i < capacity; ++i) {
-    if (keys_[i] == kEmpty) continue;
-    Entry& e = entries_[i];
-    in.get(e.F);
-    in.get(e.F_trial);
-    in.get(e.Fn);
-    in.get(e.Fn_trial);
-    e.sliding = in.get<char>() != 0;
-    e.sliding_trial = in.get<char>() != 0;
-    in.get(e.trial);
-    ++size_;
-  }
+template <class Self, class Archive>
+void FrictionHistory::serialize(Self& f, Archive& ar) {
+  ar.tag("FRIC");
+  Table::serialize(f.map_, ar);
+  ar(f.dt_);
+  ar(f.trial_);
+  ar(f.slipping_);
 }
 
 void FrictionHistory::save(StateWriter& out) const {
-  out.tag("FRIC");
-  map_.save(out);
-  out.put(dt_);
-  out.put(trial_);
-  out.put(slipping_);
+  serialize(*this, out);
 }
-
 void FrictionHistory::load(StateReader& in) {
-  in.tag("FRIC");
-  map_.load(in);
-  in.get(dt_);
-  in.get(trial_);
-  in.get(slipping_);
+  serialize(*this, in);
 }
 
 void FrictionHistory::commit() {

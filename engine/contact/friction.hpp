@@ -92,6 +92,9 @@ class FrictionHistory {
   const FrictionParams& params() const { return p_; }
 
  private:
+  // save() and load() in one (Self: FrictionHistory or const FrictionHistory).
+  template <class Self, class Archive>
+  static void serialize(Self& history, Archive& ar);
   struct Entry {
     Vec3 F = Vec3::Zero();  // committed tangential force on A [N]
     bool sliding = false;   // committed state
@@ -117,8 +120,9 @@ class FrictionHistory {
     template <class Keep>
     void retain(Keep keep);
     std::size_t size() const { return size_; }
-    void save(StateWriter& out) const;
-    void load(StateReader& in);
+    // Checkpoints: with StateWriter (Self const) or StateReader (engine/state_archive.hpp).
+    template <class Self, class Archive>
+    static void serialize(Self& table, Archive& ar);
 
    private:
     static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};  // never a key: a >= 0
@@ -144,14 +148,18 @@ class FrictionHistory {
   long slipping_ = 0;
 };
 
-// A contact term's optional history in a checkpoint: a flag, then the history.
-inline void save_friction(StateWriter& out, const FrictionHistory* f) {
-  out.put(static_cast<char>(f != nullptr));
-  if (f) f->save(out);
-}
-inline void load_friction(StateReader& in, FrictionHistory* f) {
-  if ((in.get<char>() != 0) != (f != nullptr)) in.fail("friction on one side only");
-  if (f) f->load(in);
+// A contact term's optional history in a checkpoint: a flag, then the history (F: FrictionHistory
+// or const FrictionHistory; null when the term has no friction).
+template <class Archive, class F>
+void serialize_friction(Archive& ar, F* f) {
+  char present = f != nullptr;
+  ar(present);
+  if ((present != 0) != (f != nullptr)) ar.fail("friction on one side only");
+  if constexpr (Archive::kLoading) {
+    if (f) f->load(ar);
+  } else {
+    if (f) f->save(ar);
+  }
 }
 
 }  // namespace wirepack

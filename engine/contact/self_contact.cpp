@@ -186,22 +186,21 @@ double SelfContactTerm::omega_max_sq(const RodInertia&) const {
   return 2.0 * max_stiffness_ / p_.node_mass;
 }
 
-void SelfContactTerm::save(StateWriter& out) const {
-  out.tag("SELF");
-  out.put(edges_at_build_);
-  out.put(rebuilds_);
-  out.put(x_at_build_);
-  out.put(candidates_);
-  save_friction(out, friction_.get());
+template <class Self, class Archive>
+void SelfContactTerm::serialize(Self& t, Archive& ar) {
+  ar.tag("SELF");
+  ar(t.edges_at_build_);
+  ar(t.rebuilds_);
+  ar(t.x_at_build_);
+  ar(t.candidates_);
+  serialize_friction(ar, t.friction_.get());
 }
 
+void SelfContactTerm::save(StateWriter& out) const {
+  serialize(*this, out);
+}
 void SelfContactTerm::load(StateReader& in) {
-  in.tag("SELF");
-  in.get(edges_at_build_);
-  in.get(rebuilds_);
-  in.get(x_at_build_);
-  in.get(candidates_);
-  load_friction(in, friction_.get());
+  serialize(*this, in);
 }
 
 }  // namespace wirepack

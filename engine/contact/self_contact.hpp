@@ -80,6 +80,9 @@ class SelfContactTerm : public Term {
   long rebuilds() const { return rebuilds_; }
 
  private:
+  // Checkpoints: save() and load() in one (engine/state_archive.hpp).
+  template <class Self, class Archive>
+  static void serialize(Self& term, Archive& ar);
   // Number of edges that take part: those with at least one dynamic node.
   static int active_edges(const RodState& s) { return std::min(s.n_free, s.num_edges()); }
   void maybe_rebuild(const RodState& s);

@@ -423,28 +423,26 @@ double ShellSelfContactTerm::omega_max_sq(const RodInertia&) const {
   return ratio * max_row_stiffness_ / p_.vertex_mass;
 }
 
-void ShellSelfContactTerm::save(StateWriter& out) const {
-  out.tag("SSLF");
-  out.put(rebuilds_);
-  out.put(x_at_build_);
-  out.put(vt_faces_);
-  out.put(vt_edges_);
-  out.put(vt_verts_);
-  out.put(ee_);
-  save_friction(out, friction_.get());
+template <class Self, class Archive>
+void ShellSelfContactTerm::serialize(Self& t, Archive& ar) {
+  ar.tag("SSLF");
+  ar(t.rebuilds_);
+  ar(t.x_at_build_);
+  ar(t.vt_faces_);
+  ar(t.vt_edges_);
+  ar(t.vt_verts_);
+  ar(t.ee_);
+  if (!t.x_at_build_.empty() &&
+      t.x_at_build_.size() != static_cast<std::size_t>(t.mesh_.num_vertices()))
+    ar.fail("shell self-contact of another mesh");
+  serialize_friction(ar, t.friction_.get());
 }
 
+void ShellSelfContactTerm::save(StateWriter& out) const {
+  serialize(*this, out);
+}
 void ShellSelfContactTerm::load(StateReader& in) {
-  in.tag("SSLF");
-  in.get(rebuilds_);
-  in.get(x_at_build_);
-  in.get(vt_faces_);
-  in.get(vt_edges_);
-  in.get(vt_verts_);
-  in.get(ee_);
-  if (!x_at_build_.empty() && x_at_build_.size() != static_cast<std::size_t>(mesh_.num_vertices()))
-    in.fail("shell self-contact of another mesh");
-  load_friction(in, friction_.get());
+  serialize(*this, in);
 }
 
 }  // namespace wirepack

@@ -113,6 +113,9 @@ class ShellSelfContactTerm : public Term {
   const Hertz& ee_law() const { return hertz_ee_; }
 
  private:
+  // Checkpoints: save() and load() in one (engine/state_archive.hpp).
+  template <class Self, class Archive>
+  static void serialize(Self& term, Archive& ar);
   // A (vertex, face) pair in contact: barycentric weights of the closest point, unit normal
   // (from the face to the vertex), overlap [m] and net normal force after its share of the
   // inclusion-exclusion corrections [N].

@@ -109,14 +109,17 @@ double SphereWallTerm::omega_max_sq(const RodInertia&) const {
   return max_stiffness_ / p_.node_mass;
 }
 
-void SphereWallTerm::save(StateWriter& out) const {
-  out.tag("WALL");
-  save_friction(out, friction_.get());
+template <class Self, class Archive>
+void SphereWallTerm::serialize(Self& t, Archive& ar) {
+  ar.tag("WALL");
+  serialize_friction(ar, t.friction_.get());
 }
 
+void SphereWallTerm::save(StateWriter& out) const {
+  serialize(*this, out);
+}
 void SphereWallTerm::load(StateReader& in) {
-  in.tag("WALL");
-  load_friction(in, friction_.get());
+  serialize(*this, in);
 }
 
 }  // namespace wirepack

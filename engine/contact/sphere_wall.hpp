@@ -52,6 +52,9 @@ class SphereWallTerm : public Term {
   const FrictionHistory* friction() const { return friction_.get(); }
 
  private:
+  // Checkpoints: save() and load() in one (engine/state_archive.hpp).
+  template <class Self, class Archive>
+  static void serialize(Self& term, Archive& ar);
   // Overlap and outward unit normal (from the wire towards the wall) of node x; false if none.
   bool overlap(const Vec3& x, double& delta, Vec3& normal, bool& rim) const;
 

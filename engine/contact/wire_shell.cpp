@@ -463,45 +463,34 @@ double WireShellTerm::omega_max_sq(const RodInertia&) const {
   return max_stiffness_ * (1.0 / m_min + 1.0 / std::sqrt(p_.node_mass * p_.vertex_mass));
 }
 
-void WireShellTerm::save(StateWriter& out) const {
-  out.tag("WSHL");
-  out.put(edges_at_build_);
-  out.put(rebuilds_);
-  out.put(face_reach_);
-  out.put(x_at_build_);
-  out.put(shell_at_build_);
-  out.put(candidates_);
-  out.put(seg_edge_);
-  out.put(seg_vert_);
-  out.put(edge_owner_);
-  out.put(vert_owner_start_);
-  out.put(vert_owner_);
-  out.put(cand_slack2_4_);
-  out.put(edge_slack2_4_);
-  out.put(vert_slack2_4_);
-  save_friction(out, friction_.get());
+template <class Self, class Archive>
+void WireShellTerm::serialize(Self& t, Archive& ar) {
+  ar.tag("WSHL");
+  ar(t.edges_at_build_);
+  ar(t.rebuilds_);
+  ar(t.face_reach_);
+  ar(t.x_at_build_);
+  ar(t.shell_at_build_);
+  ar(t.candidates_);
+  ar(t.seg_edge_);
+  ar(t.seg_vert_);
+  ar(t.edge_owner_);
+  ar(t.vert_owner_start_);
+  ar(t.vert_owner_);
+  ar(t.cand_slack2_4_);
+  ar(t.edge_slack2_4_);
+  ar(t.vert_slack2_4_);
+  if (!t.shell_at_build_.empty() &&
+      t.shell_at_build_.size() != static_cast<std::size_t>(t.mesh_.num_vertices()))
+    ar.fail("wire-shell contact of another mesh");
+  serialize_friction(ar, t.friction_.get());
 }
 
+void WireShellTerm::save(StateWriter& out) const {
+  serialize(*this, out);
+}
 void WireShellTerm::load(StateReader& in) {
-  in.tag("WSHL");
-  in.get(edges_at_build_);
-  in.get(rebuilds_);
-  in.get(face_reach_);
-  in.get(x_at_build_);
-  in.get(shell_at_build_);
-  in.get(candidates_);
-  in.get(seg_edge_);
-  in.get(seg_vert_);
-  in.get(edge_owner_);
-  in.get(vert_owner_start_);
-  in.get(vert_owner_);
-  in.get(cand_slack2_4_);
-  in.get(edge_slack2_4_);
-  in.get(vert_slack2_4_);
-  if (shell_at_build_.size() != static_cast<std::size_t>(mesh_.num_vertices()) &&
-      !shell_at_build_.empty())
-    in.fail("wire-shell contact of another mesh");
-  load_friction(in, friction_.get());
+  serialize(*this, in);
 }
 
 }  // namespace wirepack

@@ -71,6 +71,9 @@ class WireShellTerm : public Term {
   double max_overlap() const { return max_overlap_; }
 
  private:
+  // Checkpoints: save() and load() in one (engine/state_archive.hpp).
+  template <class Self, class Archive>
+  static void serialize(Self& term, Archive& ar);
   // One (wire edge, face) pair in contact: closest points, normal (from shell to wire), overlap
   // and its net normal force (after its share of the corrections) [N].
   struct FacePair {

@@ -133,24 +133,22 @@ double PredictorCorrector::step(RodState& s, const EvaluateFn& eval,
   }
 }
 
-void PredictorCorrector::save(StateWriter& out) const {
-  out.tag("INTG");
-  out.put(dt_);
-  out.put(dt_stable_);
-  out.put(rejected_);
-  out.put(a_);
-  out.put(alpha_);
-  out.put(sa_);
+template <class Self, class Archive>
+void PredictorCorrector::serialize(Self& pc, Archive& ar) {
+  ar.tag("INTG");
+  ar(pc.dt_);
+  ar(pc.dt_stable_);
+  ar(pc.rejected_);
+  ar(pc.a_);
+  ar(pc.alpha_);
+  ar(pc.sa_);
 }
 
+void PredictorCorrector::save(StateWriter& out) const {
+  serialize(*this, out);
+}
 void PredictorCorrector::load(StateReader& in) {
-  in.tag("INTG");
-  in.get(dt_);
-  in.get(dt_stable_);
-  in.get(rejected_);
-  in.get(a_);
-  in.get(alpha_);
-  in.get(sa_);
+  serialize(*this, in);
 }
 
 }  // namespace wirepack

@@ -54,6 +54,8 @@ class PredictorCorrector {
 
  private:
   double stable_step(double omega2) const;
+  template <class Self, class Archive>
+  static void serialize(Self& pc, Archive& ar);
 
   StepControl c_;
   double r_;  // length scale of the twist error (wire radius) [m]
