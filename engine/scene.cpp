@@ -15,6 +15,15 @@
 
 namespace wirepack {
 
+double shell_inertia_thickness(const SceneParams& p) {
+  const double t = p.R() / p.xi;
+  const double q = p.numerics.quasistatic_ratio, v = p.injection_speed;
+  const double rho_s = p.wire.youngs_modulus / p.eps * q * q / (v * v);  // [kg/m^3]
+  // Never above the physical inertia, the shell taken at the wire's density (both polymers).
+  const double t_physical = t * std::max(1.0, p.wire.density / rho_s);
+  return std::max(t, std::min(p.numerics.shell_inertia_thickness * p.wire.radius, t_physical));
+}
+
 Assembly assemble(const SceneParams& p) {
   Assembly a;
   const WireParams& w = p.wire;
@@ -117,11 +126,16 @@ Assembly assemble(const SceneParams& p) {
     // breathing period as long as the time to inject R, v / c_s ~ 0.3: a heavy shell that
     // lags the wire, where the paper's is quasistatic (v / c_s ~ 0.016).
     const double rho_s = sm.E * q * q / (v * v);
+    // Thin shells carry the inertia of thickness t_m = shell_inertia_thickness(p) >= t: up to
+    // c r (c = numerics.shell_inertia_thickness), never above the physical inertia. A contact
+    // stiffens a vertex by ~2 E* sqrt(r delta) whatever t, while the membrane's stiffness and
+    // the vertex mass go as t: below t ~ r the contacts, not the membrane waves, set the step.
+    const double t_mass = shell_inertia_thickness(p);
     a.vertex_mass.assign(mesh.num_vertices(), 0.0);
     for (const auto& f : mesh.faces) {
       const double area =
           0.5 * (mesh.rest[f[1]] - mesh.rest[f[0]]).cross(mesh.rest[f[2]] - mesh.rest[f[0]]).norm();
-      for (int v : f) a.vertex_mass[v] += rho_s * sm.t * area / 3.0;
+      for (int v : f) a.vertex_mass[v] += rho_s * t_mass * area / 3.0;
     }
     double m_min = std::numeric_limits<double>::infinity();
     for (int v = 0; v < mesh.num_vertices(); ++v) {
@@ -129,7 +143,11 @@ Assembly assemble(const SceneParams& p) {
     }
     // Vertex damping at 2 zeta omega_b, the membrane breathing frequency of the sphere,
     // omega_b^2 = 2 E_s / (rho_s R^2 (1 - nu_s)): the mode the injected wire drives.
+    // The rate refers to the mass of thickness t: the drag per vertex, rate x mass, does not
+    // grow with the extra inertia of a thin shell (t_mass > t), so slow (overdamped) motions of
+    // the shell relax as before.
     a.shell_damping_rate = 2.0 * zeta * std::sqrt(2.0 * sm.E / (rho_s * R * R * (1.0 - sm.nu)));
+    if (t_mass > sm.t) a.shell_damping_rate *= sm.t / t_mass;
     a.terms.push_back(
         std::make_unique<ShellTermAdapter>(std::make_unique<MembraneTerm>(mesh, sm), m_min));
     a.terms.push_back(

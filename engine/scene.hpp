@@ -59,11 +59,17 @@ struct Assembly {
   // Elastic shell (Engine III); empty for a rigid sphere.
   std::unique_ptr<ShellMesh> mesh;  // rest mesh, shared read-only by the shell terms
   ShellMaterial shell_material;
-  std::vector<double> vertex_mass;      // lumped, scaled like the wire (nv) [kg]
+  std::vector<double> vertex_mass;      // lumped, rho_s t_m A / 3 (nv) [kg]
   double shell_damping_rate = 0;        // gamma_s of the vertex damping [1/s]
   WireShellTerm* wire_shell = nullptr;  // owned by `terms`
   WireShellParams wire_shell_params;    // its parameters (for read-only probes)
 };
+
+// Thickness whose inertia the shell's vertices carry [m]: t_m = max(t, min(c r, t rho_w / rho_s))
+// with t = R / xi, c = numerics.shell_inertia_thickness, rho_s = E_s q^2 / v^2 the scaled
+// shell density and rho_w the wire's physical density: a thin shell (t < c r) gets heavier
+// vertices, but never heavier than a physical shell of the wire's density (scene.cpp).
+double shell_inertia_thickness(const SceneParams& p);
 
 // Throws std::invalid_argument for scenes this engine cannot simulate.
 Assembly assemble(const SceneParams& p);

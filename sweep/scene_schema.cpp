@@ -194,6 +194,17 @@ const std::vector<KeySpec>& scene_schema() {
                                                     : v == "off" ? EffectMode::Off
                                                                  : EffectMode::Auto;
            }},
+      {.pointer = "/numerics/shell_inertia_thickness",
+       .type = Type::Number,
+       .need = Need::Optional,
+       .default_text = "1 (not in the resolved scene)",
+       .min = Bound{0, true},
+       .doc = "the elastic shell's vertex masses are those of thickness max(t, this x r) (0: t), "
+              "at most a physical shell's at the wire's density, its drag that of t: heavier "
+              "vertices for thin soft shells (xi > rho, eps > 350), whose contacts would set "
+              "the step [-]",
+       .apply = [](Scene& s,
+                   const json& v) { s.engine.numerics.shell_inertia_thickness = num(v); }},
       {.pointer = "/output/every_l",
        .type = Type::Number,
        .need = Need::Optional,
