@@ -4,6 +4,7 @@
 #include <map>
 #include <set>
 
+#include "engine/scene.hpp"
 #include "sweep/format.hpp"
 #include "sweep/json_file.hpp"
 
@@ -265,6 +266,13 @@ Scene parse_scene(const json& j, const std::string& source) {
     spec.apply(scene, it->second);
     scene.resolved[json::json_pointer(spec.pointer)] = it->second;
   }
+  // shell_inertia_thickness came after runs existed; it is resolved where it acts (a thin soft
+  // shell, engine/scene.hpp), so the configuration holds what the result depends on, and the
+  // runs it leaves unchanged, bitwise, keep their ids.
+  const SceneParams& e = scene.engine;
+  if (e.shell == ShellKind::Elastic && shell_inertia_thickness(e) > e.R() / e.xi)
+    scene.resolved["/numerics/shell_inertia_thickness"_json_pointer] =
+        e.numerics.shell_inertia_thickness;
   scene.numerics_preset = preset;
   return scene;
 }

@@ -197,7 +197,7 @@ const std::vector<KeySpec>& scene_schema() {
       {.pointer = "/numerics/shell_inertia_thickness",
        .type = Type::Number,
        .need = Need::Optional,
-       .default_text = "1 (not in the resolved scene)",
+       .default_text = "1 (resolved where it acts)",
        .min = Bound{0, true},
        .doc = "the elastic shell's vertex masses are those of thickness max(t, this x r) (0: t), "
               "at most a physical shell's at the wire's density, its drag that of t: heavier "

@@ -70,9 +70,9 @@ TEST(SceneConfig, DefaultsFilled) {
   EXPECT_EQ(s.output.snapshots_every_l, 5);
 
   // The resolved JSON has every key of the schema, each a valid value, except the one added
-  // after runs existed whose default leaves all of them unchanged in physics, bitwise
-  // (shell_inertia_thickness: acts only on thin soft shells, t < r and eps > 350): it is
-  // resolved only when given, so no existing run's id moves.
+  // after runs existed whose default leaves them unchanged in physics, bitwise, wherever it is
+  // not resolved (shell_inertia_thickness: resolved where it acts, on thin soft shells, t < r
+  // and eps > 350; SceneConfig.ShellInertiaResolvedWhereItActs), so no such run's id moves.
   for (const auto& spec : scene_schema()) {
     const bool neutral = spec.pointer == "/numerics/shell_inertia_thickness";
     EXPECT_EQ(s.resolved.contains(json::json_pointer(spec.pointer)), !neutral) << spec.pointer;
@@ -82,6 +82,32 @@ TEST(SceneConfig, DefaultsFilled) {
   EXPECT_EQ(s.resolved["/numerics/twist"_json_pointer], "auto");
   // Resolving is idempotent: the resolved scene resolves to itself.
   EXPECT_EQ(parse_scene(s.resolved, "resolved").resolved, s.resolved);
+}
+
+// shell_inertia_thickness is in the resolved scene (so in the run's id) exactly where it changes
+// the result: a thin soft shell (t = R / xi < r, eps > 350), or when given.
+TEST(SceneConfig, ShellInertiaResolvedWhereItActs) {
+  const auto resolved_has = [](json j) {
+    return parse_scene(j, "s.json")
+        .resolved.contains("/numerics/shell_inertia_thickness"_json_pointer);
+  };
+  json thin = minimal_elastic();
+  thin["xi"] = 200;
+  thin["eps"] = 1e4;
+  EXPECT_TRUE(resolved_has(thin));
+  const Scene s = parse_scene(thin, "s.json");
+  EXPECT_EQ(s.resolved["/numerics/shell_inertia_thickness"_json_pointer], 1.0);
+  EXPECT_EQ(parse_scene(s.resolved, "resolved").resolved, s.resolved);  // idempotent
+  json stiff = thin;
+  stiff["eps"] = 100;  // the cap: no heavier than a physical shell, here t itself
+  EXPECT_FALSE(resolved_has(stiff));
+  json thick = thin;
+  thick["xi"] = 10;  // t = 2 r
+  EXPECT_FALSE(resolved_has(thick));
+  json given = thick;
+  given["numerics"]["shell_inertia_thickness"] = 1;
+  EXPECT_TRUE(resolved_has(given));
+  EXPECT_FALSE(resolved_has(minimal_rigid()));
 }
 
 TEST(SceneConfig, CanonicalNumbers) {
