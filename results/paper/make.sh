@@ -71,7 +71,8 @@ run() {  # FIG THREADS
 sweep_pids() {  # FIG: the wirepack processes sweeping into FIG/sweep (not their shells)
   local p
   for p in $(pgrep -f -- "--out $here/$1/sweep( |\$)" || true); do
-    [ "$(cat "/proc/$p/comm" 2> /dev/null)" = wirepack ] && echo "$p"
+    # The executable, not its name (wirepack re-executes itself as /proc/self/exe).
+    case "$(readlink "/proc/$p/exe" 2> /dev/null)" in */wirepack | */wirepack" (deleted)") echo "$p" ;; esac
   done
   return 0
 }
