@@ -247,8 +247,7 @@ struct Simulation::Impl {
       std::string name = k < n_terms ? m.assembly.terms[k]->name() : "";
       ar(name);
       const std::string here = k < n_terms ? m.assembly.terms[k]->name() : "no term";
-      if (k >= n_terms || name != here)
-        ar.fail("term " + name + " where this scene has " + here);
+      if (k >= n_terms || name != here) ar.fail("term " + name + " where this scene has " + here);
     }
     if (names.size() != n_terms) ar.fail("another set of terms");
     ar(m.time);
