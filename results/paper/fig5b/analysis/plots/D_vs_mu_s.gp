@@ -1,4 +1,4 @@
-# D against mu_s (paper Fig. 5); data: ../D_vs_mu_s.csv
+# D_chord against mu_s (paper Fig. 5); data: ../D_vs_mu_s.csv
 # Render: gnuplot D_vs_mu_s.gp
 if (!exists("out")) out = "D_vs_mu_s.png"
 if (strstrt(GPVAL_TERMINALS, "pngcairo") > 0) {
@@ -10,16 +10,23 @@ set output out
 set grid
 set key top left
 $d0_0 << EOD
+0.05 0.0620294281682674 0.00048112018607759927
+0.1 0.06831595030751536 0.008608193315717272
+0.15 0.07575115725118353 0
+EOD
+$d0_1 << EOD
 0.05 0.16835541786975866 0.009903321967172194
 0.1 0.16494846442014877 0.006502264986236516
+0.15 0.1782491300149911 0
 EOD
 reset
 set grid
 set key top left
-set title "D = max of D(l) over l in [5, 50]: mean and SEM over seeds"
+set title "D_chord = max of D_chord(l) over l in [5, 50]: mean and SEM over seeds"
 set xlabel "mu_s"
-set ylabel "D"
+set ylabel "D_chord"
 set yrange [0:*]
 set offsets graph 0.03, graph 0.03, graph 0.05, 0
-plot $d0_0 using 1:2:3 with yerrorlines pointtype 7 pointsize 0.8 notitle
+plot $d0_0 using 1:2:3 with yerrorlines pointtype 7 pointsize 0.8 title "D_chord", \
+     $d0_1 using 1:2:3 with yerrorlines pointtype 7 pointsize 0.8 title "literal D"
 set output
