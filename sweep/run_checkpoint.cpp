@@ -7,6 +7,7 @@
 
 #include "engine/state_archive.hpp"
 #include "sweep/atomic_file.hpp"
+#include "sweep/sweep_config.hpp"
 
 namespace wirepack::sweep {
 
@@ -14,15 +15,6 @@ namespace {
 
 constexpr char kMagic[] = "wirepack checkpoint\n";
 constexpr std::size_t kMagicSize = sizeof(kMagic) - 1;
-
-std::uint64_t fnv1a(std::string_view bytes) {
-  std::uint64_t h = 14695981039346656037ull;  // FNV-1a 64 offset basis
-  for (unsigned char c : bytes) {
-    h ^= c;
-    h *= 1099511628211ull;  // FNV prime
-  }
-  return h;
-}
 
 // The body of a checkpoint, written or read (engine/state_archive.hpp); C: RunCheckpoint or
 // const RunCheckpoint.
@@ -69,7 +61,7 @@ void write_checkpoint(const RunCheckpoint& c, const std::string& path) {
   const std::int32_t format = kCheckpointFormat;
   file.append(reinterpret_cast<const char*>(&format), sizeof format);
   file += out.bytes();
-  const std::uint64_t sum = fnv1a(file);
+  const std::uint64_t sum = fnv1a64(file);
   file.append(reinterpret_cast<const char*>(&sum), sizeof sum);
   write_file_atomic(path, file);
 }
@@ -94,7 +86,7 @@ RunCheckpoint read_checkpoint(const std::string& path) {
   const std::size_t body_end = file.size() - sizeof(std::uint64_t);
   std::uint64_t sum = 0;
   std::memcpy(&sum, file.data() + body_end, sizeof sum);
-  if (sum != fnv1a(std::string_view(file).substr(0, body_end)))
+  if (sum != fnv1a64(std::string_view(file).substr(0, body_end)))
     throw fail("damaged (checksum mismatch)");
   const std::size_t body_start = kMagicSize + sizeof(std::int32_t);
   StateReader in(std::string_view(file).substr(body_start, body_end - body_start));

@@ -38,12 +38,17 @@ std::string point_key(const json& resolved_scene) {
   return resolved_scene.is_object() ? canonical_json(point_scene(resolved_scene)) : "";
 }
 
-std::string run_id(const json& resolved_scene) {
+std::uint64_t fnv1a64(std::string_view bytes) {
   std::uint64_t h = 14695981039346656037ull;  // FNV-1a 64 offset basis
-  for (unsigned char c : canonical_json(resolved_scene)) {
+  for (unsigned char c : bytes) {
     h ^= c;
     h *= 1099511628211ull;  // FNV prime
   }
+  return h;
+}
+
+std::string run_id(const json& resolved_scene) {
+  const std::uint64_t h = fnv1a64(canonical_json(resolved_scene));
   char buf[17];
   std::snprintf(buf, sizeof(buf), "%016llx", static_cast<unsigned long long>(h));
   return buf;

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -70,6 +71,8 @@ const nlohmann::json& default_sweep_json();
 // Canonical text of a JSON value: keys sorted, no whitespace, every number as a double
 // (so 20 and 20.0 are the same), -0 as 0.
 std::string canonical_json(const nlohmann::json& j);
+// FNV-1a 64 of `bytes` (run ids, run checkpoints' checksum).
+std::uint64_t fnv1a64(std::string_view bytes);
 // FNV-1a 64 of canonical_json(resolved scene), as 16 lower-case hex digits.
 std::string run_id(const nlohmann::json& resolved_scene);
 
