@@ -311,9 +311,6 @@ struct Simulation::Impl {
   }
 };
 
-Simulation::Simulation(const SceneParams& params) : impl_(std::make_unique<Impl>(params)) {}
-Simulation::~Simulation() = default;
-
 namespace {
 // The engine's parallel loops use `threads` threads while in scope; the caller's setting is
 // restored after (the results do not depend on it: every parallel loop writes its own entries
@@ -331,6 +328,14 @@ class ThreadScope {
   int saved_;
 };
 }  // namespace
+
+// Built on one thread (the count is set after, by set_threads): a run inside a sweep spawns no
+// nested team of all the machine's threads.
+Simulation::Simulation(const SceneParams& params) {
+  ThreadScope scope(1);
+  impl_ = std::make_unique<Impl>(params);
+}
+Simulation::~Simulation() = default;
 
 void Simulation::set_threads(int threads) {
   impl_->threads = std::max(1, threads);
@@ -397,6 +402,7 @@ std::span<const Vec3> Simulation::all_nodes() const {
 }
 
 Energies Simulation::energies() const {
+  ThreadScope scope(impl_->threads);  // the terms' energies run the parallel force loops
   const auto U = impl_->energy_by_type();
   const auto of = [&](TermType t) { return U[static_cast<int>(t)]; };
   Energies e;

@@ -5,7 +5,10 @@
 
 #include <omp.h>
 
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <random>
 
 #include "engine/elastic_runs.hpp"
@@ -171,6 +174,36 @@ TEST(ParallelAssembly, ElasticRunIsBitwiseTheSameOnOneAndTwoThreads) {
   EXPECT_TRUE(bitwise_equal(Vec3List(xa.begin(), xa.end()), Vec3List(xb.begin(), xb.end())));
   const auto sa = one.shell_vertices(), sb = two.shell_vertices();
   EXPECT_TRUE(bitwise_equal(Vec3List(sa.begin(), sa.end()), Vec3List(sb.begin(), sb.end())));
+}
+
+// The threads of this process (Linux: one entry per thread in /proc/self/task).
+int process_threads() {
+  int n = 0;
+  for ([[maybe_unused]] const auto& t : std::filesystem::directory_iterator("/proc/self/task")) ++n;
+  return n;
+}
+
+// A run set to one thread uses one, also where the caller allows more: building the simulation,
+// its steps and the recorder's energy evaluations between steps start no OpenMP team (they
+// did: a --threads 1 run kept a second thread spinning, and each run of a sweep started nested
+// teams of all the machine's threads for its recorder). In a fresh process (gtest re-executes
+// the binary for the death test), where no team has run yet.
+TEST(ParallelAssembly, ARunOnOneThreadStartsNoOtherThread) {
+  ::testing::GTEST_FLAG(death_test_style) = "threadsafe";
+  EXPECT_EXIT(
+      {
+        omp_set_num_threads(4);  // what the caller allows
+        SceneParams p = testing::elastic_scene(10, 10, 1e3, 0.5, 1.4);
+        p.numerics.element_length = 2 * p.wire.radius;
+        p.numerics.shell_mesh_size = 2 * p.wire.radius;
+        Simulation sim(p);
+        sim.set_threads(1);
+        while (!sim.finished()) sim.step();
+        const Energies e = sim.energies();
+        std::fprintf(stderr, "threads %d U_m %g\n", process_threads(), e.U_m);
+        std::exit(process_threads() == 1 && sim.steps() > 0 ? 0 : 1);
+      },
+      ::testing::ExitedWithCode(0), "threads 1 ");
 }
 
 }  // namespace
