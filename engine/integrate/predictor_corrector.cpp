@@ -125,7 +125,7 @@ double PredictorCorrector::step(RodState& s, const EvaluateFn& eval,
     // (otherwise time-reversible) scheme drift in energy.
     if (factor < 1.0) {
       dt_ = dt * std::max(factor, c_.min_shrink);
-    } else if (factor > 2.0) {
+    } else if (factor > c_.grow_when) {
       dt_ = dt * std::min(factor, c_.max_growth);
     }
     dt_ = std::min(dt_, dt_stable_);

@@ -21,7 +21,10 @@ struct StepControl {
   double safety = 0.9;       // fraction of the stability limit and of the error-optimal step
   double max_growth = 1.5;   // largest step growth factor per step
   double min_shrink = 0.2;   // smallest step shrink factor per step
-  double dt_floor = 0;       // below this the step has collapsed [s]
+  // Hysteresis: the step grows only when the error-optimal step (safety included) is at least
+  // this many times the current one; it shrinks as soon as it is below the current one.
+  double grow_when = 2.0;
+  double dt_floor = 0;  // below this the step has collapsed [s]
 };
 
 // Accelerations of the dynamic DOFs at a state: fills a (n, zero for the guide), alpha
