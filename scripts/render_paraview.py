@@ -210,6 +210,7 @@ class Scene:
 
         self.pv, self.run, self.args = pv, run, args
         w, h = args.size
+        self.scale = framing(run, w / h)  # the camera's distance over the default one
         self.view = pv.CreateView("RenderView")
         self.view.ViewSize = [w, h]
         self.view.OrientationAxesVisibility = 0
@@ -259,13 +260,14 @@ class Scene:
         text_rep.Color = [0.1, 0.1, 0.1]
 
     def camera(self):
-        """Side view with the hole at the bottom, the whole sphere in the picture (set after
-        every Show: the first one resets the camera)."""
-        R = self.run.R
+        """Side view with the hole at the bottom, the whole sphere in the picture, farther where
+        the packing reaches beyond it (framing; set after every Show: the first one resets the
+        camera)."""
+        d = self.run.R * self.scale
         self.view.CameraFocalPoint = [0.0, 0.0, 0.0]
-        self.view.CameraPosition = [0.0, -3.9 * R, 1.0 * R]
+        self.view.CameraPosition = [c * d for c in CAMERA_POSITION]
         self.view.CameraViewUp = [0.0, 0.0, 1.0]
-        self.view.CameraViewAngle = 30.0
+        self.view.CameraViewAngle = VIEW_ANGLE
 
     def show(self, k):
         pv, run, args = self.pv, self.run, self.args
@@ -333,6 +335,51 @@ class Scene:
     def save(self, path):
         self.pv.SaveScreenshot(path, self.view, ImageResolution=list(self.args.size),
                                TransparentBackground=0)
+
+
+# The camera: side view from -y, a little above the equator, the sphere's centre in the middle
+# (position in units of R, vertical view angle in degrees).
+CAMERA_POSITION = (0.0, -3.9, 1.0)
+VIEW_ANGLE = 30.0
+
+
+def fits(points, scale, R, aspect, margin=0.97):
+    """Whether every point (n x 3) [m] lies inside `margin` of the picture's half-width and
+    half-height, seen by the perspective camera at `scale` times its distance."""
+    import numpy as np
+
+    C = scale * R * np.asarray(CAMERA_POSITION)
+    forward = -C / np.linalg.norm(C)
+    up = np.array([0.0, 0.0, 1.0]) - forward[2] * forward
+    up /= np.linalg.norm(up)
+    right = np.cross(forward, up)
+    v = np.asarray(points, dtype=float) - C
+    depth = v @ forward
+    if np.any(depth <= 0):
+        return False
+    t = margin * np.tan(np.radians(VIEW_ANGLE / 2))
+    return bool(np.all(np.abs(v @ up) <= t * depth) and
+                np.all(np.abs(v @ right) <= aspect * t * depth))
+
+
+def framing(run, aspect):
+    """The camera's distance as a multiple of the default one (>= 1): the smallest, in steps of
+    1 %, at which every snapshot's wire and shell lie in the picture, so that one run's pictures
+    and movie share one framing. 1 where the packing stays inside the sphere's view; a soft thin
+    shell drawn out by the wire (twice R and more) needs up to ~2.2."""
+    import numpy as np
+
+    pts = []
+    for k in range(len(run)):
+        wire, _, _, shell = run.snapshot(k)
+        pts.append(np.asarray(wire, dtype=float).reshape(-1, 3))
+        if shell is not None:
+            pts.append(shell["x"])
+    allp = np.vstack(pts)
+    scale = 1.0
+    while scale < 10.0 and not fits(allp, scale, run.R, aspect):
+        scale += 0.01
+    return scale
 
 
 def shell_range(run, field):
