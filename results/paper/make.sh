@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The paper reproduction campaign (results/paper/README.md). From anywhere, after scripts/setup.sh:
 #   bash results/paper/make.sh status              runs done and left per figure (partial: runs
-#                                                  with a checkpoint to resume from); runs nothing
+#                                                  with a checkpoint to resume from; the CPU hours
+#                                                  left at the median of its complete runs); runs
+#                                                  nothing
 #   bash results/paper/make.sh run FIG [THREADS]   runs or resumes FIG's sweep (fig5b, fig5a, fig4,
 #                                                  fig1_3), seeds in stages: every point gets seeds
 #                                                  1-2 first, then 3-5, then the rest, so that an
@@ -28,7 +30,8 @@ expected_files() {  # FIG -> the run files its sweep file asks for, one per line
 
 status() {
   local total_done=0 total=0
-  printf '%-7s %5s %5s %6s %8s  %s\n' figure done left failed partial "run data"
+  printf '%-7s %5s %5s %6s %8s %11s  %s\n' figure done left failed partial "left [CPU h]" \
+    "run data"
   for f in "${figs[@]}"; do
     local n=0 done=0 failed=0 partial=0
     while read -r file; do
@@ -41,7 +44,18 @@ status() {
     fi
     local size="-"
     [ -d "$here/$f/sweep" ] && size=$(du -sh "$here/$f/sweep" | cut -f1)
-    printf '%-7s %5d %5d %6d %8d  %s\n' "$f" "$done" $((n - done)) "$failed" "$partial" "$size"
+    # What is left, at the median wall time of the figure's complete runs (one core each; the
+    # joblog's wall_s of a resumed run counts all its sittings); "?" before the first one.
+    local cost="?"
+    if [ -f "$here/$f/sweep/joblog.csv" ]; then
+      cost=$(awk -F, -v left=$((n - done)) 'NR > 1 && $6 == "complete" { w[++k] = $5 }
+        END { if (k == 0) { print "?"; exit }
+              for (i = 1; i <= k; ++i) for (j = i + 1; j <= k; ++j) if (w[j] < w[i]) { t = w[i]; w[i] = w[j]; w[j] = t }
+              m = (k % 2) ? w[(k + 1) / 2] : (w[k / 2] + w[k / 2 + 1]) / 2
+              printf "%.1f", left * m / 3600 }' "$here/$f/sweep/joblog.csv")
+    fi
+    printf '%-7s %5d %5d %6d %8d %11s  %s\n' "$f" "$done" $((n - done)) "$failed" "$partial" \
+      "$cost" "$size"
     total_done=$((total_done + done))
     total=$((total + n))
   done
