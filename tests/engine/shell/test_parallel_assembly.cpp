@@ -192,6 +192,8 @@ TEST(ParallelAssembly, ARunOnOneThreadStartsNoOtherThread) {
   ::testing::GTEST_FLAG(death_test_style) = "threadsafe";
   EXPECT_EXIT(
       {
+        // Threads the process had before (a sanitizer may keep one of its own).
+        const int before = process_threads();
         omp_set_num_threads(4);  // what the caller allows
         SceneParams p = testing::elastic_scene(10, 10, 1e3, 0.5, 1.4);
         p.numerics.element_length = 2 * p.wire.radius;
@@ -200,10 +202,10 @@ TEST(ParallelAssembly, ARunOnOneThreadStartsNoOtherThread) {
         sim.set_threads(1);
         while (!sim.finished()) sim.step();
         const Energies e = sim.energies();
-        std::fprintf(stderr, "threads %d U_m %g\n", process_threads(), e.U_m);
-        std::exit(process_threads() == 1 && sim.steps() > 0 ? 0 : 1);
+        std::fprintf(stderr, "threads %d more U_m %g\n", process_threads() - before, e.U_m);
+        std::exit(process_threads() == before && sim.steps() > 0 ? 0 : 1);
       },
-      ::testing::ExitedWithCode(0), "threads 1 ");
+      ::testing::ExitedWithCode(0), "threads 0 more");
 }
 
 }  // namespace
