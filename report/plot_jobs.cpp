@@ -154,8 +154,12 @@ std::optional<PlotJob> view_plot(const Analysis& a, const View& v,
     inset.xrange = inset_range(xs, f);
     // The inset goes into the upper corner on the coiled (low) side, so it hides no data: D
     // rises across x_c (mu_s) or falls (eps); the key below the panel.
+    // The first and the last point with a value: grid values not run yet (NaN) say nothing.
     const auto& rows = panel.curves[0].rows;
-    const bool rising = rows.front()[1] <= rows.back()[1];
+    const auto has_value = [](const std::array<double, 3>& r) { return std::isfinite(r[1]); };
+    const auto first = std::find_if(rows.begin(), rows.end(), has_value);
+    const auto last = std::find_if(rows.rbegin(), rows.rend(), has_value);
+    const bool rising = first == rows.end() || (*first)[1] <= (*last)[1];
     panel.key = "outside bottom center horizontal";
     panel.place = std::array<double, 4>{0, 0, 1, 1};
     inset.place = std::array<double, 4>{rising ? 0.13 : 0.53, 0.45, 0.42, 0.42};

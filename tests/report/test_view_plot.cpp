@@ -64,17 +64,25 @@ RunRecord make_run(const SweepRun& run) {
   return r;
 }
 
-// mu_s = 0 ... 0.6 in steps of 0.1, 3 seeds, D over l in [2, 10].
-void write_transition_sweep(const std::string& dir, const std::string& analysis) {
+// mu_s = 0 ... 0.6 in steps of 0.1, 3 seeds, D over l in [2, 10]; with `not_run_yet`, also
+// mu_s = 0.8 and 1, whose runs are pending (a campaign part-way).
+void write_transition_sweep(const std::string& dir, const std::string& analysis,
+                            bool not_run_yet = false) {
+  const std::string grid = not_run_yet ? "[0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.8, 1]"
+                                       : "[0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6]";
   const Sweep sw = parse_sweep(
       parse_json_text(R"({"name": "tr", "base": {"rho": 20, "shell": "rigid", "l_max": 10},
-          "grid": {"mu_s": [0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6]}, "seeds": 3, "analysis": )" +
-                          analysis + "}",
+          "grid": {"mu_s": )" +
+                          grid + R"(}, "seeds": 3, "analysis": )" + analysis + "}",
                       "tr.json"),
       "tr.json");
   fs::create_directories(fs::path(dir) / "runs");
   std::vector<ManifestEntry> entries;
   for (const auto& run : sw.runs) {
+    if (run.point_values["mu_s"].get<double>() > 0.7) {
+      entries.push_back({&run, EntryStatus::Pending});
+      continue;
+    }
     write_run_file(make_run(run), (fs::path(dir) / run.file).string());
     entries.push_back({&run, EntryStatus::Complete});
   }
@@ -156,6 +164,20 @@ TEST(ViewPlot, TransitionGetsItsFitAndAnInsetAboutXc) {
   const std::string png = dir / "analysis/plots/D_vs_mu_s.png";
   ASSERT_TRUE(fs::exists(png));
   EXPECT_EQ(read_text(png).substr(1, 3), "PNG");
+}
+
+// Grid values not run yet (their D is NaN) do not turn the inset over to the crumpled side,
+// where it would hide the data (it did: Fig. 5b part-way had it over its mu_s = 0.3 point).
+TEST(ViewPlot, InsetStaysOnTheCoiledSideWhileGridValuesAreNotRunYet) {
+  TempDir dir;
+  write_transition_sweep(dir.path().string(),
+                         R"({"D_window": [2, 10], "order_parameter": "D_chord"})", true);
+  AnalyzeOptions o;
+  o.dir = dir.path().string();
+  o.gnuplot = "";
+  analyze_sweep(o);
+  const std::string gp = read_text(dir / "analysis/plots/D_vs_mu_s.gp");
+  EXPECT_NE(gp.find("set origin 0.13, 0.45"), std::string::npos) << gp;
 }
 
 TEST(ViewPlot, LiteralDAloneWithoutTheOrderParameterOrAFit) {
