@@ -27,6 +27,7 @@ for --movie, ffmpeg. Every output is written to a temporary name and renamed. Ex
 
 import argparse
 import json
+import math
 import os
 import shutil
 import subprocess
@@ -343,17 +344,23 @@ CAMERA_POSITION = (0.0, -3.9, 1.0)
 VIEW_ANGLE = 30.0
 
 
+def camera_axes():
+    """Unit vectors of the default camera: forward (towards the sphere's centre), up, right."""
+    import numpy as np
+
+    forward = -np.asarray(CAMERA_POSITION) / np.linalg.norm(CAMERA_POSITION)
+    up = np.array([0.0, 0.0, 1.0]) - forward[2] * forward
+    up /= np.linalg.norm(up)
+    return forward, up, np.cross(forward, up)
+
+
 def fits(points, scale, R, aspect, margin=0.97):
     """Whether every point (n x 3) [m] lies inside `margin` of the picture's half-width and
     half-height, seen by the perspective camera at `scale` times its distance."""
     import numpy as np
 
-    C = scale * R * np.asarray(CAMERA_POSITION)
-    forward = -C / np.linalg.norm(C)
-    up = np.array([0.0, 0.0, 1.0]) - forward[2] * forward
-    up /= np.linalg.norm(up)
-    right = np.cross(forward, up)
-    v = np.asarray(points, dtype=float) - C
+    forward, up, right = camera_axes()
+    v = np.asarray(points, dtype=float) - scale * R * np.asarray(CAMERA_POSITION)
     depth = v @ forward
     if np.any(depth <= 0):
         return False
@@ -362,11 +369,14 @@ def fits(points, scale, R, aspect, margin=0.97):
                 np.all(np.abs(v @ right) <= aspect * t * depth))
 
 
-def framing(run, aspect):
-    """The camera's distance as a multiple of the default one (>= 1): the smallest, in steps of
-    1 %, at which every snapshot's wire and shell lie in the picture, so that one run's pictures
-    and movie share one framing. 1 where the packing stays inside the sphere's view; a soft thin
-    shell drawn out by the wire (twice R and more) needs up to ~2.2."""
+def framing(run, aspect, margin=0.97):
+    """The camera's distance as a multiple of the default one (>= 1): the smallest (to 0.1 %) at
+    which every snapshot's wire and shell lie inside `margin` of the picture (fits), so that one run's
+    pictures and movie share one framing. Moving the camera back along its axis leaves a point's
+    offsets across the view unchanged and adds to its depth, so each point's condition
+    |offset| <= t depth is linear in the distance: the scale is a maximum over the points. 1
+    where the packing stays inside the sphere's view; a soft thin shell drawn out by the wire
+    (twice R and more) needs up to ~2.2."""
     import numpy as np
 
     pts = []
@@ -375,11 +385,14 @@ def framing(run, aspect):
         pts.append(np.asarray(wire, dtype=float).reshape(-1, 3))
         if shell is not None:
             pts.append(shell["x"])
-    allp = np.vstack(pts)
-    scale = 1.0
-    while scale < 10.0 and not fits(allp, scale, run.R, aspect):
-        scale += 0.01
-    return scale
+    p = np.vstack(pts)
+    forward, up, right = camera_axes()
+    t = margin * np.tan(np.radians(VIEW_ANGLE / 2))
+    # depth = p . forward + scale * |C|, with C the default camera position [m].
+    need = np.maximum(np.abs(p @ up) / t, np.abs(p @ right) / (aspect * t)) - p @ forward
+    scale = float(np.max(need)) / (run.R * np.linalg.norm(CAMERA_POSITION))
+    # Rounded up to 0.1 %: the points at the limit stay inside it whatever the rounding.
+    return max(1.0, math.ceil(scale * 1000.0) / 1000.0)
 
 
 def shell_range(run, field):
