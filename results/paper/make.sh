@@ -48,11 +48,11 @@ status() {
     # joblog's wall_s of a resumed run counts all its sittings); "?" before the first one.
     local cost="?"
     if [ -f "$here/$f/sweep/joblog.csv" ]; then
-      cost=$(awk -F, -v left=$((n - done)) 'NR > 1 && $6 == "complete" { w[++k] = $5 }
-        END { if (k == 0) { print "?"; exit }
-              for (i = 1; i <= k; ++i) for (j = i + 1; j <= k; ++j) if (w[j] < w[i]) { t = w[i]; w[i] = w[j]; w[j] = t }
-              m = (k % 2) ? w[(k + 1) / 2] : (w[k / 2] + w[k / 2 + 1]) / 2
-              printf "%.1f", left * m / 3600 }' "$here/$f/sweep/joblog.csv")
+      cost=$(awk -F, 'NR > 1 && $6 == "complete" { print $5 }' "$here/$f/sweep/joblog.csv" |
+        sort -g | awk -v left=$((n - done)) '{ w[++k] = $1 }
+          END { if (k == 0) { print "?"; exit }
+                m = (k % 2) ? w[(k + 1) / 2] : (w[k / 2] + w[k / 2 + 1]) / 2
+                printf "%.1f", left * m / 3600 }')
     fi
     printf '%-7s %5d %5d %6d %8d %11s  %s\n' "$f" "$done" $((n - done)) "$failed" "$partial" \
       "$cost" "$size"
