@@ -10,6 +10,7 @@ set output out
 set grid
 set key top left
 $d0_0 << EOD
+0.5 0.8675108754725107 0
 EOD
 reset
 set grid
@@ -17,7 +18,7 @@ set key top left
 set title "D = max of D(l) over l in [5, 200]: mean and SEM over seeds"
 set xlabel "mu_s"
 set ylabel "D"
-set label 1 "no data" at graph 0.5, 0.5 center
-plot [0:1][0:1] NaN notitle
-unset label 1
+set yrange [0:*]
+set offsets graph 0.03, graph 0.03, graph 0.05, 0
+plot $d0_0 using 1:2:3 with yerrorlines pointtype 7 pointsize 0.8 notitle
 set output
