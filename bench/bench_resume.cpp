@@ -18,20 +18,7 @@
 #include "engine/simulation.hpp"
 #include "sweep/run_checkpoint.hpp"
 #include "sweep/scene_config.hpp"
-
-namespace {
-
-// FNV-1a 64 of a byte string.
-std::uint64_t fnv1a(const std::string& bytes) {
-  std::uint64_t h = 1469598103934665603ULL;
-  for (unsigned char c : bytes) {
-    h ^= c;
-    h *= 1099511628211ULL;
-  }
-  return h;
-}
-
-}  // namespace
+#include "sweep/sweep_config.hpp"
 
 int main(int argc, char** argv) {
   using namespace wirepack;
@@ -63,7 +50,7 @@ int main(int argc, char** argv) {
       const auto t1 = std::chrono::steady_clock::now();
       per_step.push_back(std::chrono::duration<double>(t1 - t0).count() / steps);
       l1 = sim.l();
-      const std::uint64_t h = fnv1a(sim.save_state());
+      const std::uint64_t h = sweep::fnv1a64(sim.save_state());
       if (k > 0 && h != hash) throw std::runtime_error("repeats ended in different states");
       hash = h;
     }
