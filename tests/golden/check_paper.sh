@@ -2,31 +2,46 @@
 # The paper reproduction's committed tables are what `wirepack analyze` makes from its committed
 # run data (issue 15): for every figure of results/paper with run files and an analysis folder,
 # the analysis is rerun into a temporary folder and every CSV compared byte for byte with the
-# committed one. Exit 77 (skipped) while no figure has both yet.
+# committed one, and so are a figure's tables along l (along_l.sh, rerun). Exit 77 (skipped)
+# while no figure has both yet.
 # Usage: check_paper.sh WIREPACK SOURCE_DIR
 set -euo pipefail
 wirepack=$1
 paper=$2/results/paper
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
+# same COMMITTED MADE FIG REMAKE: every CSV of the folder COMMITTED (results/paper/FIG/...) is
+# byte for byte the one in MADE, or the difference is shown with the command REMAKE.
+same() {
+  local csv
+  for csv in "$1"/*.csv; do
+    if ! diff -q "$csv" "$2/$(basename "$csv")" >/dev/null; then
+      { diff "$csv" "$2/$(basename "$csv")" || true; } | head -20
+      echo "results/paper/$3/$(basename "$1")/$(basename "$csv") is not what the run data in" \
+        "results/paper/$3/sweep make: rerun $4"
+      exit 1
+    fi
+  done
+}
+# run LOG COMMAND...: COMMAND with its output in LOG, shown if it fails.
+run() {
+  local log=$1
+  shift
+  "$@" >/dev/null 2>"$log" || { cat "$log"; exit 1; }
+}
 checked=0
 for dir in "$paper"/*/; do
   fig=$(basename "$dir")
   compgen -G "$dir/sweep/runs/*.h5" >/dev/null || continue
   [ -d "$dir/analysis" ] || continue
   cp -r "$dir/sweep" "$tmp/$fig"
-  "$wirepack" analyze "$tmp/$fig" --out "$tmp/$fig.out" --no-plots >/dev/null 2>"$tmp/$fig.log" || {
-    cat "$tmp/$fig.log"
-    exit 1
-  }
-  for csv in "$dir"/analysis/*.csv; do
-    if ! diff -q "$csv" "$tmp/$fig.out/$(basename "$csv")" >/dev/null; then
-      diff "$csv" "$tmp/$fig.out/$(basename "$csv")" | head -20
-      echo "results/paper/$fig/analysis/$(basename "$csv") is not what wirepack analyze makes" \
-        "from results/paper/$fig/sweep: rerun bash results/paper/make.sh analyze $fig"
-      exit 1
-    fi
-  done
+  run "$tmp/$fig.log" "$wirepack" analyze "$tmp/$fig" --out "$tmp/$fig.out" --no-plots
+  same "$dir/analysis" "$tmp/$fig.out" "$fig" "bash results/paper/make.sh analyze $fig"
+  # A figure's tables along l (fig4/along_l.sh), remade the same way.
+  if [ -f "$dir/along_l.sh" ] && [ -d "$dir/along_l" ]; then
+    run "$tmp/$fig.along.log" bash "$dir/along_l.sh" "$wirepack" "$tmp/$fig.along_l"
+    same "$dir/along_l" "$tmp/$fig.along_l" "$fig" "bash results/paper/$fig/along_l.sh"
+  fi
   checked=$((checked + 1))
   echo "results/paper/$fig: analysis tables match the run data"
 done
