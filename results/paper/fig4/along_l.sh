@@ -9,6 +9,9 @@
 #                           l_max/2^k] for k = 0..3 (`--fit-window`, the scaling-window rule
 #                           off): the local exponent, beside the whole window's in
 #                           analysis/exponents.csv
+#   phase_by_octave.csv     each run's order parameter over the same octaves (`--d-window`): the
+#                           mean and the maximum of D and the maximum of D_chord, i.e. whether the
+#                           packing is coiled or crumpled where each local exponent is taken
 # Columns as in analysis/distributions.csv (without the histogram) and analysis/exponents.csv.
 # WIREPACK defaults to build/wirepack. tests/golden/check_paper.sh reruns this script and
 # compares its tables with the committed ones.
@@ -67,12 +70,16 @@ for l in $(awk -v e="$every" -v m="$lmax" 'BEGIN { for (k = 1; k * e <= m + 1e-9
 done
 table distributions_vs_l.csv "$cols" "-k1,1g -k2,2 -k3,3g"
 
-# Every exponent over each octave of l, plain least squares on log-spaced points.
+# Every exponent over each octave of l, plain least squares on log-spaced points, and each run's
+# D over the same octave.
+octaves="3 2 1 0"
+for k in $octaves; do
+  read -r lo hi < <(awk -v m="$lmax" -v k="$k" 'BEGIN { print m / 2 ^ (k + 1), m / 2 ^ k }')
+  analyze_into "octave$k" false --fit-window "$lo,$hi" --d-window "$lo,$hi"
+done
 cols=mu_s,name,series,window_l_min,window_l_max,value,stderr,n_points,n_seeds,method
 : > "$tmp/rows"
-for k in 3 2 1 0; do
-  read -r lo hi < <(awk -v m="$lmax" -v k="$k" 'BEGIN { print m / 2 ^ (k + 1), m / 2 ^ k }')
-  analyze_into "octave$k" false --fit-window "$lo,$hi"
+for k in $octaves; do
   pick "$tmp/octave$k/analysis/exponents.csv" "$cols" '$c["ok"] == "true"' >> "$tmp/rows"
 done
 if grep -q ',auto' "$tmp/rows"; then
@@ -80,3 +87,10 @@ if grep -q ',auto' "$tmp/rows"; then
   exit 1
 fi
 table exponents_by_octave.csv "$cols" "-k1,1g -k2,2 -k4,4g"
+
+cols=mu_s,seed,D_l_min,D_l_max,D_avg,D,D_chord
+: > "$tmp/rows"
+for k in $octaves; do
+  pick "$tmp/octave$k/analysis/runs.csv" "$cols" '$c["status"] == "complete"' >> "$tmp/rows"
+done
+table phase_by_octave.csv "$cols" "-k1,1g -k2,2g -k3,3g"
