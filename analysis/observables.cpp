@@ -181,6 +181,69 @@ Order curvature_weighted_order(Centerline x) {
   return o;
 }
 
+SenseBlocks sense_blocks(std::span<const double> ell, std::span<const int> sign, double min_block) {
+  SenseBlocks out;
+  const std::size_t n = std::min(ell.size(), sign.size());
+  // Maximal runs of one sign: lengths b [m] and signs, alternating once merged.
+  std::vector<double> b;
+  std::vector<int> sg;
+  for (std::size_t i = 0; i < n; ++i) {
+    out.length += ell[i];
+    const int s = sign[i] > 0 ? 1 : sign[i] < 0 ? -1 : 0;
+    if (b.empty()) {
+      b.push_back(ell[i]);
+      sg.push_back(s);
+    } else if (s == 0 || s == sg.back() || sg.back() == 0) {
+      b.back() += ell[i];
+      if (sg.back() == 0) sg.back() = s;  // leading non-turning nodes join the first block
+    } else {
+      b.push_back(ell[i]);
+      sg.push_back(s);
+    }
+  }
+  // Merge the shortest block below min_block with its neighbours until none is left.
+  while (b.size() > 1) {
+    std::size_t k = 0;
+    for (std::size_t j = 1; j < b.size(); ++j)
+      if (b[j] < b[k]) k = j;
+    if (!(b[k] < min_block)) break;
+    const std::size_t lo = k > 0 ? k - 1 : k, hi = k + 1 < b.size() ? k + 1 : k;
+    double merged = 0;
+    for (std::size_t j = lo; j <= hi; ++j) merged += b[j];
+    const int s = k > 0 ? sg[k - 1] : sg[k + 1];  // the neighbours' sense
+    b.erase(b.begin() + static_cast<std::ptrdiff_t>(lo) + 1,
+            b.begin() + static_cast<std::ptrdiff_t>(hi) + 1);
+    sg.erase(sg.begin() + static_cast<std::ptrdiff_t>(lo) + 1,
+             sg.begin() + static_cast<std::ptrdiff_t>(hi) + 1);
+    b[lo] = merged;
+    sg[lo] = s;
+  }
+  if (b.empty() || !(out.length > 0)) return out;
+  out.reversals = b.size() - 1;
+  double sum2 = 0;
+  for (const double len : b) sum2 += len * len;
+  out.order_length = sum2 / out.length;
+  return out;
+}
+
+SenseBlocks sense_blocks(Centerline x, const Vec3& n, double min_block) {
+  if (x.size() < 3) return {};
+  const std::vector<double> all = voronoi_lengths(x);
+  std::vector<double> ell;
+  std::vector<int> sign;
+  Vec3 t0, t1;
+  for (std::size_t i = 1; i + 1 < x.size(); ++i) {
+    ell.push_back(all[i]);
+    int s = 0;
+    if (edge_tangent(x, i - 1, t0) && edge_tangent(x, i, t1)) {
+      const double kn = n.dot(t0.cross(t1));
+      s = kn > kZeroTurn ? 1 : kn < -kZeroTurn ? -1 : 0;
+    }
+    sign.push_back(s);
+  }
+  return sense_blocks(ell, sign, min_block);
+}
+
 std::size_t entry_chord_start(Centerline x, double r, double slack, std::size_t exclude,
                               double hole_zone,
                               const std::function<double(const Vec3&)>& distance_to_shell) {

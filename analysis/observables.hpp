@@ -48,6 +48,23 @@ Order curvature_weighted_order(Centerline x);
 // about the axis n (unit) (n values; 0 at the two ends, at a zero-length edge and at a complete
 // fold-back) [-]: positive where the wire turns counter-clockwise about n.
 std::vector<double> signed_turning(Centerline x, const Vec3& n);
+// Sense blocks (docs/design.md §5.3): the wire cut where the sign of its turning about the axis
+// n changes, blocks shorter than min_block merged into their neighbours (the shortest first, the
+// first of equal ones first: merging a block joins it and its two neighbours, which turn alike).
+// D = 1 - |S| cannot tell one coil wound one way and then the other (a reversal: D up to 1) from
+// loops turning every way; the blocks can: a coil is one block, a reversed coil two or three long
+// ones, a disordered packing many of about a loop's length. Interior nodes, each weighing its
+// Voronoi length, signs as order_parameter (a node that does not turn joins the block before it,
+// leading ones the first block).
+struct SenseBlocks {
+  std::size_t reversals = 0;  // number of blocks - 1 [-]
+  double order_length = 0;    // length-weighted mean block length sum b^2 / sum b [m]
+  double length = 0;          // sum b: the interior nodes' Voronoi lengths [m]
+};
+// The core on a sequence: node weights ell (n) [m] and turning signs (n, each -1, 0 or 1).
+SenseBlocks sense_blocks(std::span<const double> ell, std::span<const int> sign, double min_block);
+// A centerline's blocks about the axis n (unit); min_block [m].
+SenseBlocks sense_blocks(Centerline x, const Vec3& n, double min_block);
 // The entry chord: the wire from the hole (the last node of the inside wire) back to its first
 // contact with the shell or with another part of the wire. Walking back from the last node,
 // node i is in contact when distance_to_shell(x_i) < r + slack (distance of the centreline point

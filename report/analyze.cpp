@@ -87,6 +87,7 @@ AnalyzeResult analyze_sweep(const AnalyzeOptions& o) {
   files.emplace_back("series.csv", series_csv(a, series));
   files.emplace_back("distributions.csv", distributions_csv(a, samples, dists));
   files.emplace_back("loop_sensitivity.csv", loop_sensitivity_csv(a, samples));
+  files.emplace_back("morphology.csv", morphology_csv(a, samples));
   const auto crit_points = critical_points(a);
   const auto slices = critical_slices(a.axes, crit_points, a.settings.bootstrap_resamples, "",
                                       a.settings.critical_ranges);

@@ -19,6 +19,7 @@
 #include "report/settings.hpp"
 #include "sweep/series.hpp"
 #include "sweep/sweep_config.hpp"
+#include "sweep/wire_profile.hpp"
 
 namespace wirepack::report {
 
@@ -162,6 +163,14 @@ struct Samples {
   // The loop parameters over the detector's settings (smoothing 1, 2, 4 r x prominence 0.1,
   // 0.25, 0.5), the runs' wires pooled (analysis::loop_sensitivity).
   std::vector<analysis::LoopSensitivityRow> loop_sensitivity;
+  // Each of those runs' order parameters at l (sweep::order_variants: the paper's D, without the
+  // entry chord, curvature-weighted, and the sense blocks), in the point's seed order.
+  struct RunOrder {
+    const RunData* run = nullptr;
+    double l = NaN;  // the snapshot's l [-]
+    sweep::OrderVariants order;
+  };
+  std::vector<RunOrder> orders;
   // The packing of the first of those runs: its wire and shell vertices (none if rigid) at l
   // [m], the cavity radius R [m].
   std::vector<std::array<double, 3>> wire, shell;

@@ -9,6 +9,7 @@
 #include "sweep/errors.hpp"
 #include "sweep/json_file.hpp"
 #include "sweep/run_file.hpp"
+#include "sweep/scene_config.hpp"
 #include "sweep/sweep_config.hpp"
 #include "sweep/sweep_manifest.hpp"
 
@@ -175,6 +176,16 @@ std::vector<Samples> distribution_samples(const fs::path& dir, const Analysis& a
         s.R = number_at(r->config, "/rho") * wire_r;
       }
       ++s.runs;
+      try {
+        const sweep::Scene scene = sweep::parse_scene(r->config, r->file + " (config)");
+        std::vector<analysis::Vec3> sv;
+        for (const auto& q : rec.snapshots[*k].shell_vertices) sv.emplace_back(q[0], q[1], q[2]);
+        s.orders.push_back(
+            {r, rec.snapshots[*k].l,
+             sweep::order_variants(x, scene.engine, sv, rec.snapshots[*k].shell_triangles)});
+      } catch (const std::exception&) {
+        // a config this version cannot resolve: no order parameters for the run
+      }
       const auto k2 = analysis::normalized_squared_curvature(x);
       s.kappa2.insert(s.kappa2.end(), k2.begin(), k2.end());
       if (std::isfinite(wire_r) && wire_r > 0) {

@@ -208,4 +208,20 @@ std::string loop_sensitivity_csv(const Analysis& a, const std::vector<Samples>& 
   return t.text();
 }
 
+std::string morphology_csv(const Analysis& a, const std::vector<Samples>& samples) {
+  Table t(cat(std::vector<std::string>{"file", "point"}, a.param_names,
+              std::vector<std::string>{"seed", "l", "D", "D_chord", "D_kappa", "chord_R",
+                                       "reversals", "order_length_R", "min_block_R"}));
+  for (std::size_t i = 0; i < a.points.size(); ++i)
+    for (const auto& o : samples[i].orders)
+      t.add(cat(
+          std::vector<std::string>{csv_field(o.run->file), std::to_string(i)},
+          param_cells(a, a.points[i]),
+          std::vector<std::string>{cell(o.run->seed), num(o.l), num(o.order.D),
+                                   num(o.order.D_chord), num(o.order.D_kappa),
+                                   num(o.order.chord_length_R), std::to_string(o.order.reversals),
+                                   num(o.order.order_length_R), num(sweep::kMinSenseBlock_R)}));
+  return t.text();
+}
+
 }  // namespace wirepack::report

@@ -18,5 +18,9 @@ std::string distributions_csv(const Analysis& a, const std::vector<Samples>& sam
                               const Distributions& ds);
 // loop_sensitivity.csv: per point, the loop parameters over the loop detector's settings.
 std::string loop_sensitivity_csv(const Analysis& a, const std::vector<Samples>& samples);
+// morphology.csv: per run with a snapshot at the distributions' l, its order parameters there
+// (the paper's D, D_chord, D_kappa, the entry chord) and its sense blocks (reversals, order
+// length): a coil, a coil wound one way and then the other, or a disordered packing.
+std::string morphology_csv(const Analysis& a, const std::vector<Samples>& samples);
 
 }  // namespace wirepack::report

@@ -55,6 +55,10 @@ OrderVariants order_variants(analysis::Centerline x, const SceneParams& p,
   o.S_chord = body.S;
   o.D_chord = body.D;
   o.chord_start = k;
+  const analysis::SenseBlocks blocks =
+      analysis::sense_blocks(x.first(k), body.n, kMinSenseBlock_R * p.R());
+  o.reversals = blocks.reversals;
+  o.order_length_R = blocks.order_length / p.R();
   double chord = 0;
   for (std::size_t i = k; i + 1 < x.size(); ++i) chord += (x[i + 1] - x[i]).norm();
   o.chord_length_R = chord / p.R();
@@ -83,7 +87,9 @@ void export_profile(const std::string& run_file, long snapshot, const std::strin
   out << "# " << run_file << ", snapshot " << snapshot << ", l = " << format_number(snap.l)
       << "\n# D = " << format_number(o.D) << ", D_chord = " << format_number(o.D_chord)
       << ", D_kappa = " << format_number(o.D_kappa)
-      << ", entry chord = " << format_number(o.chord_length_R) << " R\n";
+      << ", entry chord = " << format_number(o.chord_length_R)
+      << " R\n# reversals = " << o.reversals
+      << ", order length = " << format_number(o.order_length_R) << " R\n";
   out << "from_hole,s_R,kappa_R,kappa_n_R,shell_gap_r,self_contacts,in_chord\n";
   double s = 0;
   const std::size_t n = x.size();

@@ -46,7 +46,16 @@ struct OrderVariants {
   std::size_t chord_start = 0;      // entry_chord_start: nodes chord_start..n-1 are the chord
   double chord_length_R =
       0;  // arc length of the entry chord (node chord_start to the hole) over R [-]
+  // Sense blocks of the wire without the entry chord about D_chord's axis (analysis::sense_blocks),
+  // blocks shorter than kMinSenseBlock_R merged: a coil has none, a coil wound one way and then
+  // the other one, a disordered packing one per loop or so.
+  std::size_t reversals = 0;
+  double order_length_R = 0;  // their length-weighted mean length over R [-]
 };
+// The shortest sense block resolved, over R: the sign changes of kappa_n over shorter stretches
+// are not a loop turned the other way (the loops of the packings are longer: Fig. 6, Lambda of
+// 1.5-3 R at rho = 20), e.g. the entry chord's own S-bend (0.35 R) [-].
+inline constexpr double kMinSenseBlock_R = 1.0;
 OrderVariants order_variants(analysis::Centerline x, const SceneParams& p,
                              std::span<const analysis::Vec3> shell_vertices,
                              std::span<const std::array<int, 3>> shell_triangles);

@@ -4,10 +4,12 @@
 #                                                  with a checkpoint to resume from; the CPU hours
 #                                                  left at the median of its complete runs); runs
 #                                                  nothing
-#   bash results/paper/make.sh run FIG [THREADS]   runs or resumes FIG's sweep (fig5b, fig5a, fig4,
-#                                                  fig1_3), seeds in stages: every point gets seeds
-#                                                  1-2 first, then 3-5, then the rest, so that an
-#                                                  interrupted campaign still has whole curves
+#   bash results/paper/make.sh run FIG[,FIG...] [THREADS]
+#                                                  runs or resumes the sweeps of the figures given
+#                                                  (fig5b, fig5a, fig4, fig1_3) in stages: every
+#                                                  point of every one of them gets seeds 1-2 first,
+#                                                  then 3-5, then the rest, so that an interrupted
+#                                                  campaign still has whole curves
 #   bash results/paper/make.sh stop [FIG...]       stops the sweeps running on FIG (all figures by
 #                                                  default) with SIGTERM: each run going writes its
 #                                                  checkpoint at once; waits until they are gone
@@ -63,22 +65,46 @@ status() {
     "(budget 150 MB)"
 }
 
-run() {  # FIG THREADS
-  local f=$1 threads=$2
-  local sweep=$here/$f/$f.sweep.json
-  [ -f "$sweep" ] || { echo "make.sh: no figure $f (one of ${figs[*]})" >&2; exit 2; }
-  local seeds
-  seeds=$(grep -o '"seeds": [0-9]*' "$sweep" | grep -o '[0-9]*$')
-  local tmp
-  tmp=$(mktemp -d)
-  trap 'rm -rf "$tmp"' RETURN
-  for stage in 2 5 "$seeds"; do
-    [ "$stage" -le "$seeds" ] || stage=$seeds
-    sed "s/\"seeds\": $seeds/\"seeds\": $stage/" "$sweep" > "$tmp/$f.sweep.json"
-    echo "== $f: seeds 1-$stage ($(date -u +%H:%M:%S) UTC)"
-    "$wp" sweep "$tmp/$f.sweep.json" --out "$here/$f/sweep" --threads "$threads" \
-      --checkpoint-every 120
-    [ "$stage" -lt "$seeds" ] || break
+run_stage() {  # FIG STAGE THREADS: FIG's sweep with seeds 1-STAGE
+  local f=$1 stage=$2 threads=$3
+  local sweep=$here/$f/$f.sweep.json seeds
+  seeds=$(sweep_seeds "$f")
+  sed "s/\"seeds\": $seeds/\"seeds\": $stage/" "$sweep" > "$tmp/$f.sweep.json"
+  echo "== $f: seeds 1-$stage ($(date -u +%H:%M:%S) UTC)"
+  "$wp" sweep "$tmp/$f.sweep.json" --out "$here/$f/sweep" --threads "$threads" \
+    --checkpoint-every 120
+}
+
+sweep_seeds() {  # FIG -> the number of seeds its sweep file asks for
+  grep -o '"seeds": [0-9]*' "$here/$1/$1.sweep.json" | grep -o '[0-9]*$'
+}
+
+run() {  # FIGS THREADS: FIGS one figure or several joined by commas, taken stage by stage
+  local threads=$2 f list=()
+  IFS=, read -r -a list <<< "$1"
+  [ ${#list[@]} -gt 0 ] || { echo "make.sh: no figure given (one of ${figs[*]})" >&2; exit 2; }
+  local -A done_to=()
+  local most=0 n
+  for f in "${list[@]}"; do
+    [ -f "$here/$f/$f.sweep.json" ] || { echo "make.sh: no figure $f (one of ${figs[*]})" >&2; exit 2; }
+    n=$(sweep_seeds "$f")
+    [ "$n" -le "$most" ] || most=$n
+    done_to[$f]=0
+  done
+  tmp=$(mktemp -d)  # the staged sweep files (global: run_stage writes them)
+  trap 'rm -rf "$tmp"' EXIT
+  # Stages across all the figures given: every figure's seeds 1-2, then 3-5, then the rest.
+  local stage s
+  for stage in 2 5 "$most"; do
+    for f in "${list[@]}"; do
+      s=$stage
+      n=$(sweep_seeds "$f")
+      [ "$s" -le "$n" ] || s=$n
+      [ "$s" -gt "${done_to[$f]}" ] || continue
+      run_stage "$f" "$s" "$threads"
+      done_to[$f]=$s
+    done
+    [ "$stage" -lt "$most" ] || break
   done
 }
 
@@ -129,7 +155,7 @@ cmd=${1:-status}
 case "$cmd" in
   status) status ;;
   run)
-    [ $# -ge 2 ] || { echo "usage: make.sh run FIG [THREADS]" >&2; exit 2; }
+    [ $# -ge 2 ] || { echo "usage: make.sh run FIG[,FIG...] [THREADS]" >&2; exit 2; }
     run "$2" "${3:-$(nproc)}"
     ;;
   stop)
@@ -145,7 +171,7 @@ case "$cmd" in
     pictures "$2"
     ;;
   *)
-    echo "usage: make.sh status | run FIG [THREADS] | stop [FIG...] | analyze [FIG...] | pictures FIG" >&2
+    echo "usage: make.sh status | run FIG[,FIG...] [THREADS] | stop [FIG...] | analyze [FIG...] | pictures FIG" >&2
     exit 2
     ;;
 esac

@@ -338,6 +338,104 @@ TEST(EntryChord, CoilAgainstTheWallAndAChordFromThePole) {
   EXPECT_EQ(entry_chord_start(y, r, 0.1 * r, 4, 3 * r, to_sphere), coil + 1);
 }
 
+// ----------------------------------------------------------------------------------------------
+// Sense blocks
+
+// n nodes of weight h with sign +1 for the first `a` nodes, then alternating blocks of `b`.
+std::vector<int> signs(std::size_t n, std::size_t a, std::size_t b) {
+  std::vector<int> s(n);
+  for (std::size_t i = 0; i < n; ++i) s[i] = i < a ? 1 : ((i - a) / b) % 2 == 0 ? -1 : 1;
+  return s;
+}
+
+TEST(SenseBlocks, OneSenseIsOneBlockOfTheWholeLength) {
+  const std::vector<double> ell(500, 0.1);
+  const SenseBlocks o = sense_blocks(ell, std::vector<int>(500, -1), 1.0);
+  EXPECT_EQ(o.reversals, 0u);
+  EXPECT_NEAR(o.length, 50.0, 1e-9);
+  EXPECT_NEAR(o.order_length, 50.0, 1e-9);
+}
+
+TEST(SenseBlocks, OneReversalGivesTwoBlocksWhateverTheirLengths) {
+  // 30 then 20 (ell 0.1): sum b^2 / sum b = (900 + 400) / 50 = 26, whereas the paper's D of this
+  // sign sequence is 1 - |30 - 20| / 50 = 0.8.
+  const std::vector<double> ell(500, 0.1);
+  const SenseBlocks o = sense_blocks(ell, signs(500, 300, 1000), 1.0);
+  EXPECT_EQ(o.reversals, 1u);
+  EXPECT_NEAR(o.order_length, 26.0, 1e-9);
+}
+
+TEST(SenseBlocks, BlipsShorterThanTheMinimumAreMerged) {
+  // A 0.5-long blip of the other sense in the middle of a 50-long block, and one of 0.3 at the
+  // start: one block. With min_block 0.2 both count: three reversals.
+  const std::vector<double> ell(500, 0.1);
+  std::vector<int> s(500, 1);
+  for (int i = 200; i < 205; ++i) s[i] = -1;
+  for (int i = 0; i < 3; ++i) s[i] = -1;
+  const SenseBlocks merged = sense_blocks(ell, s, 1.0);
+  EXPECT_EQ(merged.reversals, 0u);
+  EXPECT_NEAR(merged.order_length, 50.0, 1e-9);
+  const SenseBlocks resolved = sense_blocks(ell, s, 0.2);
+  EXPECT_EQ(resolved.reversals, 3u);
+  // Blocks 0.3, 19.7, 0.5, 29.5.
+  EXPECT_NEAR(resolved.order_length, (0.09 + 19.7 * 19.7 + 0.25 + 29.5 * 29.5) / 50, 1e-9);
+}
+
+TEST(SenseBlocks, AlternatingLoopsGiveBlocksOfTheirLength) {
+  // 20 blocks of 2.5 alternating (a disordered packing's loops): 19 reversals, blocks of 2.5;
+  // the paper's D of the same sequence is 1.
+  const std::vector<double> ell(500, 0.1);
+  const SenseBlocks o = sense_blocks(ell, signs(500, 25, 25), 1.0);
+  EXPECT_EQ(o.reversals, 19u);
+  EXPECT_NEAR(o.order_length, 2.5, 1e-9);
+  // Unequal weights: the length, not the node count, decides.
+  std::vector<double> uneven(500, 0.1);
+  for (std::size_t i = 0; i < 25; ++i) uneven[i] = 0.01;  // the first block is 0.25 long
+  const SenseBlocks u = sense_blocks(uneven, signs(500, 25, 25), 1.0);
+  EXPECT_EQ(u.reversals, 18u);  // merged into the second block (now 2.75 long)
+  EXPECT_NEAR(u.length, 47.75, 1e-9);
+}
+
+TEST(SenseBlocks, NonTurningNodesJoinTheBlockBeforeThem) {
+  const std::vector<double> ell(6, 1.0);
+  const SenseBlocks o = sense_blocks(ell, std::vector<int>{0, 0, 1, 0, -1, -1}, 0.5);
+  EXPECT_EQ(o.reversals, 1u);  // blocks {0, 0, 1, 0} and {-1, -1}
+  EXPECT_NEAR(o.order_length, (16.0 + 4.0) / 6, 1e-12);
+  EXPECT_EQ(sense_blocks(ell, std::vector<int>(6, 0), 0.5).reversals, 0u);
+  EXPECT_EQ(sense_blocks(std::vector<double>{}, std::vector<int>{}, 0.5).order_length, 0.0);
+}
+
+TEST(SenseBlocks, CoilWoundOneWayThenTheOtherOnACenterline) {
+  // Three turns counter-clockwise about z, then three clockwise (the circle continued with the
+  // opposite sense from the same point, a little higher): one reversal, two blocks of three turns;
+  // the paper's D is 1 (S = 0) although both halves are perfect coils.
+  const double a = 0.8;
+  const int m = 120;
+  std::vector<Vec3> x;
+  for (int j = 0; j <= 3 * m; ++j) {
+    const double t = 2 * pi * j / m;
+    x.emplace_back(a * std::cos(t), a * std::sin(t), 0.0005 * j);
+  }
+  for (int j = 1; j <= 3 * m; ++j) {
+    const double t = -2 * pi * j / m;
+    x.emplace_back(a * std::cos(t), a * std::sin(t), 0.0005 * (3 * m + j));
+  }
+  const Vec3 n(0, 0, 1);
+  const SenseBlocks o = sense_blocks(x, n, 0.5);
+  EXPECT_EQ(o.reversals, 1u);
+  const double turn = 2 * pi * a * std::sqrt(1 + std::pow(0.0005 * m / (2 * pi * a), 2));
+  EXPECT_NEAR(o.length, 6 * turn, 0.01 * turn);
+  EXPECT_NEAR(o.order_length, 3 * turn, 0.02 * turn);
+  EXPECT_GT(order_parameter(x).D, 0.95);
+  // The same wire rotated and moved: the same blocks about the moved axis.
+  const Eigen::Matrix3d Q = some_rotation();
+  std::vector<Vec3> y;
+  for (const auto& p : x) y.push_back(Q * p + Vec3(3, -1, 2));
+  const SenseBlocks q = sense_blocks(y, Q * n, 0.5);
+  EXPECT_EQ(q.reversals, 1u);
+  EXPECT_NEAR(q.order_length, o.order_length, 1e-9);
+}
+
 TEST(Observables, EmptyOneAndTwoNodeInputsGiveDocumentedZeros) {
   const std::vector<Vec3> none;
   const std::vector<Vec3> one{Vec3(1, 2, 3)};

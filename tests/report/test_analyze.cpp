@@ -403,6 +403,41 @@ TEST_F(Analyze, DistributionsAtTheLastCommonSnapshot) {
   }
 }
 
+TEST_F(Analyze, MorphologyAtTheDistributionsSnapshot) {
+  AnalyzeOptions o;
+  o.at_l = 10;
+  analyze(o);
+  const Csv c = read_csv(out("morphology.csv"));
+  EXPECT_EQ(c.header, "file,point," + kParams +
+                          ",seed,l,D,D_chord,D_kappa,chord_R,reversals,order_length_R,"
+                          "min_block_R");
+  ASSERT_EQ(c.rows.size(), 5u);  // the complete runs: 3 of point 0, 2 of point 1
+  // The snapshot: two turns of a wire whose radius oscillates six times per turn (radius
+  // 5 mm (1 + 0.3 cos 6 theta), R = 10 mm). Its curvature changes sign in each lobe's valley over
+  // stretches far shorter than R: one sense block, the wire without its chord, whatever the seed.
+  double length = 0, edge = 0;  // the wire's length and its longest edge [m]
+  {
+    const Snapshot s = snapshot(10, 1);
+    for (std::size_t i = 0; i + 1 < s.wire.size(); ++i) {
+      double d2 = 0;
+      for (int k = 0; k < 3; ++k) d2 += std::pow(s.wire[i + 1][k] - s.wire[i][k], 2);
+      length += std::sqrt(d2);
+      edge = std::max(edge, std::sqrt(d2));
+    }
+  }
+  for (const auto& row : c.rows) {
+    EXPECT_NEAR(d(row.at("l")), 10, 1e-4);
+    EXPECT_EQ(row.at("reversals"), "0") << row.at("file");
+    EXPECT_EQ(row.at("min_block_R"), "1");
+    // The paper's D counts those short reversed stretches; the blocks do not.
+    EXPECT_GT(d(row.at("D_chord")), 0.0) << row.at("file");
+    // chord + body = the wire, but for the two end nodes' half edges and the edge at the cut.
+    EXPECT_NEAR(d(row.at("order_length_R")) + d(row.at("chord_R")), length / kR, 2 * edge / kR);
+  }
+  EXPECT_EQ(c.rows[0].at("point"), "0");
+  EXPECT_EQ(c.rows[4].at("point"), "1");
+}
+
 TEST_F(Analyze, FlagsOverrideTheAnalysisBlock) {
   AnalyzeOptions o;
   o.D_window = "12,50";  // leaves out the peak at l = 10
@@ -427,8 +462,8 @@ TEST_F(Analyze, FullRunWritesEveryFileWithOneHeaderRowDeterministically) {
   o.gnuplot = "gnuplot-that-does-not-exist";
   const AnalyzeResult r = analyze(o);
   const std::vector<std::string> names = {
-      "runs.csv",   "curves.csv",        "D_vs_mu_s.csv",        "exponents.csv",
-      "series.csv", "distributions.csv", "loop_sensitivity.csv", "critical.csv"};
+      "runs.csv",          "curves.csv",           "D_vs_mu_s.csv",  "exponents.csv", "series.csv",
+      "distributions.csv", "loop_sensitivity.csv", "morphology.csv", "critical.csv"};
   ASSERT_EQ(r.csv.size(), names.size());
   // Two values of mu_s: a row that says so, no number that looks like a result.
   const Csv crit = read_csv(out("critical.csv"));

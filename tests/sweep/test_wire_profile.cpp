@@ -91,6 +91,12 @@ TEST(EntryChord, OrderVariantsDropTheChord) {
   EXPECT_NEAR(o.D_chord, 0.0, 1e-12);
   EXPECT_NEAR(o.D_kappa, 0.0, 1e-12);
   EXPECT_EQ(o.chord_start, k.p_index + 1);
+  // The arc is one sense block: no reversal, the block as long as the arc's interior nodes.
+  EXPECT_EQ(o.reversals, 0u);
+  const auto ell = analysis::voronoi_lengths(std::span(k.x).first(o.chord_start));
+  double arc = 0;
+  for (std::size_t i = 1; i + 1 < ell.size(); ++i) arc += ell[i];
+  EXPECT_NEAR(o.order_length_R, arc / s.R(), 1e-12);
   EXPECT_NEAR(o.chord_length_R,
               (k.chord_length - k.chord_length / std::round(k.chord_length / r)) / s.R(), 1e-12);
 }

@@ -5,6 +5,8 @@
 # writes into OUT (default results/paper/fig4/along_l), and prints,
 #   distributions_vs_l.csv  Fig. 6's lognormal fits of ln(kappa^2/<kappa^2>) and ln(Lambda/r) at
 #                           every snapshot (`wirepack analyze --at-l L`), not only the last
+#   morphology_vs_l.csv     each run's D, D_chord and sense blocks (reversals, order length) at
+#                           every snapshot (analysis/morphology.csv at each l)
 #   exponents_by_octave.csv every exponent fitted over each octave of l, [l_max/2^(k+1),
 #                           l_max/2^k] for k = 0..3 (`--fit-window`, the scaling-window rule
 #                           off): the local exponent, beside the whole window's in
@@ -69,6 +71,15 @@ for l in $(awk -v e="$every" -v m="$lmax" 'BEGIN { for (k = 1; k * e <= m + 1e-9
     >> "$tmp/rows"
 done
 table distributions_vs_l.csv "$cols" "-k1,1g -k2,2 -k3,3g"
+
+# Each run's order parameters and sense blocks at the same snapshots: where the packing is a coil,
+# a coil wound one way and then the other, or loops turning every way.
+cols=mu_s,seed,l,D,D_chord,chord_R,reversals,order_length_R
+: > "$tmp/rows"
+for l in $(awk -v e="$every" -v m="$lmax" 'BEGIN { for (k = 1; k * e <= m + 1e-9; k++) print k * e }'); do
+  pick "$tmp/at$l/analysis/morphology.csv" "$cols" '1' >> "$tmp/rows"
+done
+table morphology_vs_l.csv "$cols" "-k1,1g -k2,2g -k3,3g"
 
 # Every exponent over each octave of l, plain least squares on log-spaced points, and each run's
 # D over the same octave.
