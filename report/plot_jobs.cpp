@@ -64,6 +64,10 @@ std::vector<std::array<double, 3>> model_rows(const CriticalSlice& slice) {
   return rows;
 }
 
+// Width of the main panel of D against a parameter, as a fraction of the canvas; the inset
+// about x_c takes the rest, beside it.
+constexpr double kMainWidth = 0.66;
+
 // x range of the inset: from the second grid value below x_c to the second above (or the ends),
 // widened to hold x_c's interval.
 std::array<double, 2> inset_range(std::vector<double> xs, const analysis::CriticalResult& f) {
@@ -152,17 +156,12 @@ std::optional<PlotJob> view_plot(const Analysis& a, const View& v,
     inset.vlines = panel.vlines;
     inset.bands = panel.bands;
     inset.xrange = inset_range(xs, f);
-    // The inset goes into the upper corner on the coiled (low) side, so it hides no data: D
-    // rises across x_c (mu_s) or falls (eps); the key below the panel.
-    // The first and the last point with a value: grid values not run yet (NaN) say nothing.
-    const auto& rows = panel.curves[0].rows;
-    const auto has_value = [](const std::array<double, 3>& r) { return std::isfinite(r[1]); };
-    const auto first = std::find_if(rows.begin(), rows.end(), has_value);
-    const auto last = std::find_if(rows.rbegin(), rows.rend(), has_value);
-    const bool rising = first == rows.end() || (*first)[1] <= (*last)[1];
+    // The inset goes beside the main panel, not over it: over it, it hid data on either side
+    // once the curve came back down at its far end (Fig. 5b at mu_s = 1) or had points just
+    // past x_c. The key below the main panel.
     panel.key = "outside bottom center horizontal";
-    panel.place = std::array<double, 4>{0, 0, 1, 1};
-    inset.place = std::array<double, 4>{rising ? 0.13 : 0.53, 0.45, 0.42, 0.42};
+    panel.place = std::array<double, 4>{0, 0, kMainWidth, 1};
+    inset.place = std::array<double, 4>{kMainWidth, 0.3, 1 - kMainWidth, 0.45};
     panels = {panel, inset};
   } else {
     panels = {panel};

@@ -34,12 +34,14 @@ double peak_D(double mu, int seed) {
   return 0.05 + 1.2 * std::max(0.0, mu - 0.3) + 0.01 * (seed - 2);
 }
 
-RunRecord make_run(const SweepRun& run) {
+// With `reentrant`, mu_s = 1 coils again (D 0.04 < the coil's 0.05), as Fig. 5b's mu_s = 1
+// does.
+RunRecord make_run(const SweepRun& run, bool reentrant = false) {
   RunRecord r;
   r.config = run.scene.resolved;
   r.status = RunStatus::Complete;
   const double mu = run.scene.resolved["mu_s"].get<double>();
-  const double peak = peak_D(mu, run.seed);
+  const double peak = reentrant && mu > 0.9 ? 0.04 : peak_D(mu, run.seed);
   std::map<std::string, std::vector<double>> v;
   for (int k = 0; k <= 100; ++k) {
     const double l = 0.1 * k;
@@ -65,11 +67,12 @@ RunRecord make_run(const SweepRun& run) {
 }
 
 // mu_s = 0 ... 0.6 in steps of 0.1, 3 seeds, D over l in [2, 10]; with `not_run_yet`, also
-// mu_s = 0.8 and 1, whose runs are pending (a campaign part-way).
+// mu_s = 0.8 and 1, whose runs are pending (a campaign part-way); with `reentrant`, also
+// mu_s = 0.8 and 1, run, with mu_s = 1 coiled again.
 void write_transition_sweep(const std::string& dir, const std::string& analysis,
-                            bool not_run_yet = false) {
-  const std::string grid = not_run_yet ? "[0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.8, 1]"
-                                       : "[0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6]";
+                            bool not_run_yet = false, bool reentrant = false) {
+  const std::string grid = not_run_yet || reentrant ? "[0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.8, 1]"
+                                                    : "[0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6]";
   const Sweep sw = parse_sweep(
       parse_json_text(R"({"name": "tr", "base": {"rho": 20, "shell": "rigid", "l_max": 10},
           "grid": {"mu_s": )" +
@@ -79,11 +82,11 @@ void write_transition_sweep(const std::string& dir, const std::string& analysis,
   fs::create_directories(fs::path(dir) / "runs");
   std::vector<ManifestEntry> entries;
   for (const auto& run : sw.runs) {
-    if (run.point_values["mu_s"].get<double>() > 0.7) {
+    if (not_run_yet && run.point_values["mu_s"].get<double>() > 0.7) {
       entries.push_back({&run, EntryStatus::Pending});
       continue;
     }
-    write_run_file(make_run(run), (fs::path(dir) / run.file).string());
+    write_run_file(make_run(run, reentrant), (fs::path(dir) / run.file).string());
     entries.push_back({&run, EntryStatus::Complete});
   }
   write_file_atomic(manifest_path(dir, Shard{}), manifest_json(sw, Shard{}, entries).dump(1));
@@ -138,12 +141,12 @@ TEST(ViewPlot, TransitionGetsItsFitAndAnInsetAboutXc) {
   EXPECT_NE(gp.find("title \"D_chord\""), std::string::npos);
   EXPECT_DOUBLE_EQ(number_after(gp, "set arrow from "), x_c);
   EXPECT_DOUBLE_EQ(number_after(gp, "rect from "), x_lo);
-  // The inset: placed over the main panel, its x range bracketing x_c's interval and inside
-  // the grid.
+  // The inset: beside the main panel (which keeps the left 0.66 of the canvas), its x range
+  // bracketing x_c's interval and inside the grid.
   EXPECT_NE(gp.find("set multiplot title"), std::string::npos);
-  // D rises with mu_s: the inset in the upper left, over the coil's low D.
-  EXPECT_NE(gp.find("set origin 0.13, 0.45"), std::string::npos);
-  EXPECT_NE(gp.find("rect from screen 0.13, screen 0.45 to screen 0.55, screen 0.87"),
+  EXPECT_NE(gp.find("set size 0.66, 1"), std::string::npos) << gp;
+  EXPECT_NE(gp.find("set origin 0.66, 0.3"), std::string::npos) << gp;
+  EXPECT_NE(gp.find("rect from screen 0.66, screen 0.3 to screen 1, screen 0.75"),
             std::string::npos);  // the inset's opaque background
   EXPECT_NE(gp.find("set title \"about mu_s_c (continuous model)\""), std::string::npos);
   const auto range_at = gp.find("set xrange [");
@@ -166,9 +169,9 @@ TEST(ViewPlot, TransitionGetsItsFitAndAnInsetAboutXc) {
   EXPECT_EQ(read_text(png).substr(1, 3), "PNG");
 }
 
-// Grid values not run yet (their D is NaN) do not turn the inset over to the crumpled side,
-// where it would hide the data (it did: Fig. 5b part-way had it over its mu_s = 0.3 point).
-TEST(ViewPlot, InsetStaysOnTheCoiledSideWhileGridValuesAreNotRunYet) {
+// Grid values not run yet (their D is NaN) do not move the inset (an inset over the panel, put
+// on the side read from the end points, hid Fig. 5b's mu_s = 0.3 point part-way).
+TEST(ViewPlot, InsetBesideThePanelWhileGridValuesAreNotRunYet) {
   TempDir dir;
   write_transition_sweep(dir.path().string(),
                          R"({"D_window": [2, 10], "order_parameter": "D_chord"})", true);
@@ -177,7 +180,23 @@ TEST(ViewPlot, InsetStaysOnTheCoiledSideWhileGridValuesAreNotRunYet) {
   o.gnuplot = "";
   analyze_sweep(o);
   const std::string gp = read_text(dir / "analysis/plots/D_vs_mu_s.gp");
-  EXPECT_NE(gp.find("set origin 0.13, 0.45"), std::string::npos) << gp;
+  EXPECT_NE(gp.find("set origin 0.66, 0.3"), std::string::npos) << gp;
+}
+
+// A curve that comes back down at its last grid value (the coil again at the highest mu_s): the
+// inset stays beside the panel (over it, read from the end points, it went over the data).
+TEST(ViewPlot, InsetBesideThePanelWhenTheCurveComesBackDown) {
+  TempDir dir;
+  write_transition_sweep(dir.path().string(),
+                         R"({"D_window": [2, 10], "order_parameter": "D_chord"})", false, true);
+  AnalyzeOptions o;
+  o.dir = dir.path().string();
+  o.gnuplot = "";
+  o.critical_ranges = {"mu_s=0,0.8"};  // the transition's models are monotonic: fitted up to 0.8
+  analyze_sweep(o);
+  const std::string gp = read_text(dir / "analysis/plots/D_vs_mu_s.gp");
+  ASSERT_NE(gp.find("set multiplot"), std::string::npos) << "no transition fitted:\n" << gp;
+  EXPECT_NE(gp.find("set origin 0.66, 0.3"), std::string::npos) << gp;
 }
 
 TEST(ViewPlot, LiteralDAloneWithoutTheOrderParameterOrAFit) {

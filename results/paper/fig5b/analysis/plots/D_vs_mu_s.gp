@@ -462,7 +462,7 @@ set title "D_chord = max of D_chord(l) over l in [5, 50]: mean and SEM over seed
 set xlabel "mu_s"
 set ylabel "D_chord"
 set origin 0, 0
-set size 1, 1
+set size 0.66, 1
 set object 1 rect from 0.2511082549597755, graph 0 to 0.2533330897903515, graph 1 behind fillcolor rgb "#e4e4e4" fillstyle solid 1.0 noborder
 set arrow from 0.25232230506685727, graph 0 to 0.25232230506685727, graph 1 nohead dashtype 2 linecolor rgb "#505050"
 set yrange [0:*]
@@ -476,9 +476,9 @@ set key off
 set title "about mu_s_c (smooth model)"
 set xlabel ""
 set ylabel ""
-set origin 0.53, 0.45
-set size 0.42, 0.42
-set object 1 rect from screen 0.53, screen 0.45 to screen 0.95, screen 0.87 behind fillcolor rgb "white" fillstyle solid 1.0 noborder
+set origin 0.66, 0.3
+set size 0.33999999999999997, 0.45
+set object 1 rect from screen 0.66, screen 0.3 to screen 1, screen 0.75 behind fillcolor rgb "white" fillstyle solid 1.0 noborder
 set xrange [0.2:0.4]
 set object 2 rect from 0.2511082549597755, graph 0 to 0.2533330897903515, graph 1 behind fillcolor rgb "#e4e4e4" fillstyle solid 1.0 noborder
 set arrow from 0.25232230506685727, graph 0 to 0.25232230506685727, graph 1 nohead dashtype 2 linecolor rgb "#505050"
