@@ -3,7 +3,9 @@
 # from the analysis tables (bash results/paper/make.sh analyze first). Rewrites the README's
 # section between the markers "<!-- table -->" and "<!-- /table -->"; prints the table.
 # difference in SE = (ours - paper) / sqrt(SE_ours^2 + SE_paper^2); verdict: |d| < 2 agrees,
-# 2 <= |d| < 5 differs, >= 5 disagrees; "not run" where the campaign has no data yet.
+# 2 <= |d| < 5 differs, >= 5 disagrees; "not run" where the campaign has no data yet. Fig. 5's
+# statements about D have no number: D_chord (the phase diagrams' order parameter) below 0.1
+# counts as vanishing.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 
@@ -45,6 +47,29 @@ row() {  # LABEL PAPER PAPER_SE "VALUE SE"
   }'
 }
 
+# order MU_KEY VALUE FILE: "mean sem" of D_chord at the row of D_vs_<param>.csv FILE whose first
+# column (mu_s or eps) is VALUE.
+order() {
+  local file=$3
+  [ -f "$file" ] || { echo "nan nan"; return; }
+  awk -F, -v key="$1" -v x="$2" '
+    NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next }
+    $c[key] + 0 == x + 0 && $c["n"] > 0 { print $c["D_chord_mean"], $c["D_chord_sem"]; found = 1 }
+    END { if (!found) print "nan nan" }' "$file"
+}
+
+# claim LABEL PAPER "MEAN SEM" WANT: the paper's statement about D (no number: "vanishes" or
+# "> 0") against our mean; D counts as vanishing below 0.1 (the coil's floor over l in [5, 50]:
+# the entry transient and snap-throughs, 0.05-0.08 in Fig. 5b's coiled runs).
+claim() {
+  awk -v label="$1" -v p="$2" -v o="$3" -v want="$4" 'BEGIN {
+    split(o, v, " ")
+    if (v[1] == "nan" || v[1] == "") { printf "| %s | %s | not run | | not run |\n", label, p; exit }
+    ok = want == "vanishes" ? v[1] < 0.1 : v[1] >= 0.1
+    printf "| %s | %s | %.3f ± %.3f | | %s |\n", label, p, v[1], v[2], ok ? "agrees" : "disagrees"
+  }'
+}
+
 ex=$here/fig4/analysis/exponents.csv
 di=$here/fig4/analysis/distributions.csv
 table=$(
@@ -65,6 +90,18 @@ table=$(
   row "σ of ln(κ²/⟨κ²⟩), least squares" 0.83 "" "$(lookup 0.5 kappa2:sigma_ls "$di")"
   row "mean of ln(Λ/r), least squares" 3.0 "" "$(lookup 0.5 Lambda_over_r:mu_ls "$di")"
   row "σ of ln(Λ/r), least squares" 0.48 "" "$(lookup 0.5 Lambda_over_r:sigma_ls "$di")"
+  claim "D_chord, coil at low friction, μs = 0 (Fig. 5b)" "vanishes" \
+    "$(order mu_s 0 "$here/fig5b/analysis/D_vs_mu_s.csv")" vanishes
+  claim "D_chord, μs = 0.2 (Fig. 5b, below the transition)" "vanishes" \
+    "$(order mu_s 0.2 "$here/fig5b/analysis/D_vs_mu_s.csv")" vanishes
+  claim "D_chord, μs = 0.5 (Fig. 5b, the crumpled side)" "> 0" \
+    "$(order mu_s 0.5 "$here/fig5b/analysis/D_vs_mu_s.csv")" positive
+  claim "D_chord, μs = 1 (Fig. 5b; abstract: disordered at high friction)" "> 0" \
+    "$(order mu_s 1 "$here/fig5b/analysis/D_vs_mu_s.csv")" positive
+  claim "D_chord, stiff shell at strong friction, ε = 1, μs = 1 (Fig. 5a)" "vanishes" \
+    "$(order eps 1 "$here/fig5a/analysis/D_vs_eps.csv")" vanishes
+  claim "D_chord, soft shell, ε = 10⁴, μs = 1 (Fig. 5a)" "> 0" \
+    "$(order eps 10000 "$here/fig5a/analysis/D_vs_eps.csv")" positive
 )
 echo "$table"
 readme=$here/README.md
