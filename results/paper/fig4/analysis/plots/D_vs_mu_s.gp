@@ -10,6 +10,7 @@ set output out
 set grid
 set key top left
 $d0_0 << EOD
+0 0.1538924611572231 0
 0.5 0.7973974563904342 0.07011341908207647
 EOD
 reset
