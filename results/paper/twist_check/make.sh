@@ -1,30 +1,32 @@
 #!/usr/bin/env bash
 # Does the wire's twist make the coil reverse? (results/paper/README.md, "What D counts"). Fig. 5b's
-# scene (rho = 20, xi = 10, eps = 1e3, default numerics, seed 1) at mu_s = 0.75 and 1 with the
-# twist degrees of freedom off (numerics.twist = "off": no friction torque, no twist energy), to
-# l = 36, snapshots every 6 l; their twisted counterparts are Fig. 5b's committed runs. Writes
-# summary.csv (per run and snapshot: the order parameters and the sense blocks of
-# `wirepack export --profile`); the run files go to runs/ (not committed). ~20 min a run on one
-# core. Usage: bash results/paper/twist_check/make.sh [WIREPACK]
+# scene (rho = 20, xi = 10, eps = 1e3, default numerics) at mu_s = 0.75 (seeds 1, 2) and 1
+# (seed 1) with the twist degrees of freedom off (numerics.twist = "off": no friction torque, no
+# twist energy), to l = 36, snapshots every 6 l: the scene files here, named NAME_notwist.json.
+# Their twisted counterparts are Fig. 5b's committed runs. Writes summary.csv (per run and
+# snapshot: the order parameters and the sense blocks of `wirepack export --profile`); the run
+# files go to runs/ (not committed). ~20 min a run on one core.
+# Usage: bash results/paper/twist_check/make.sh [WIREPACK]
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 wp=${1:-$here/../../../build/wirepack}
 mkdir -p "$here/runs"
-for mu in 0.75 1; do
-  run=$here/runs/mu_s-${mu}_notwist.h5
-  [ -f "$run" ] || "$wp" run "$here/mu_s-${mu}_notwist.json" --out "$run" > /dev/null
-done
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-echo "mu_s,twist,l,D,D_chord,D_kappa,chord_R,reversals,order_length_R" > "$tmp/summary.csv"
-for mu in 0.75 1; do
+echo "run,mu_s,seed,twist,l,D,D_chord,D_kappa,chord_R,reversals,order_length_R" > "$tmp/summary.csv"
+for scene in "$here"/*_notwist.json; do
+  name=$(basename "$scene" .json)
+  run=$here/runs/$name.h5
+  [ -f "$run" ] || "$wp" run "$scene" --out "$run" > /dev/null
+  mu=$(grep -o '"mu_s":[0-9.]*' "$scene" | cut -d: -f2)
+  seed=$(grep -o '"seed":[0-9]*' "$scene" | cut -d: -f2)
   for k in 1 2 3 4 5 6; do
-    "$wp" export "$here/runs/mu_s-${mu}_notwist.h5" --profile "$tmp/p.csv" --snapshot "$k"
+    "$wp" export "$run" --profile "$tmp/p.csv" --snapshot "$k"
     # "# ..., l = L", "# D = a, D_chord = b, D_kappa = c, entry chord = d R",
     # "# reversals = e, order length = f R"
-    awk -v mu="$mu" 'NR == 1 { sub(/.*l = /, ""); l = $0 }
+    awk -v pre="$name,$mu,$seed,off" 'NR == 1 { sub(/.*l = /, ""); l = $0 }
       NR == 2 { gsub(/[#A-Za-z_=R ]/, ""); v = $0 }
-      NR == 3 { gsub(/[#A-Za-z_=R ]/, ""); print mu ",off," l "," v "," $0; exit }' \
+      NR == 3 { gsub(/[#A-Za-z_=R ]/, ""); print pre "," l "," v "," $0; exit }' \
       "$tmp/p.csv" >> "$tmp/summary.csv"
   done
 done
