@@ -90,18 +90,17 @@ table=$(
   row "σ of ln(κ²/⟨κ²⟩), least squares" 0.83 "" "$(lookup 0.5 kappa2:sigma_ls "$di")"
   row "mean of ln(Λ/r), least squares" 3.0 "" "$(lookup 0.5 Lambda_over_r:mu_ls "$di")"
   row "σ of ln(Λ/r), least squares" 0.48 "" "$(lookup 0.5 Lambda_over_r:sigma_ls "$di")"
-  claim "D_chord, coil at low friction, μs = 0 (Fig. 5b)" "vanishes" \
-    "$(order mu_s 0 "$here/fig5b/analysis/D_vs_mu_s.csv")" vanishes
-  claim "D_chord, μs = 0.2 (Fig. 5b, below the transition)" "vanishes" \
-    "$(order mu_s 0.2 "$here/fig5b/analysis/D_vs_mu_s.csv")" vanishes
-  claim "D_chord, μs = 0.5 (Fig. 5b, the crumpled side)" "> 0" \
-    "$(order mu_s 0.5 "$here/fig5b/analysis/D_vs_mu_s.csv")" positive
-  claim "D_chord, μs = 1 (Fig. 5b; abstract: disordered at high friction)" "> 0" \
-    "$(order mu_s 1 "$here/fig5b/analysis/D_vs_mu_s.csv")" positive
-  claim "D_chord, stiff shell at strong friction, ε = 1, μs = 1 (Fig. 5a)" "vanishes" \
-    "$(order eps 1 "$here/fig5a/analysis/D_vs_eps.csv")" vanishes
-  claim "D_chord, soft shell, ε = 10⁴, μs = 1 (Fig. 5a)" "> 0" \
-    "$(order eps 10000 "$here/fig5a/analysis/D_vs_eps.csv")" positive
+  # LABEL | PAPER | AXIS | VALUE | TABLE | WANT, one statement of Fig. 5 per line.
+  while IFS='|' read -r label paper axis x file want; do
+    claim "$label" "$paper" "$(order "$axis" "$x" "$here/$file")" "$want"
+  done << 'ROWS'
+D_chord, coil at low friction, μs = 0 (Fig. 5b)|vanishes|mu_s|0|fig5b/analysis/D_vs_mu_s.csv|vanishes
+D_chord, μs = 0.2 (Fig. 5b, below the transition)|vanishes|mu_s|0.2|fig5b/analysis/D_vs_mu_s.csv|vanishes
+D_chord, μs = 0.5 (Fig. 5b, the crumpled side)|> 0|mu_s|0.5|fig5b/analysis/D_vs_mu_s.csv|positive
+D_chord, μs = 1 (Fig. 5b; abstract: disordered at high friction)|> 0|mu_s|1|fig5b/analysis/D_vs_mu_s.csv|positive
+D_chord, stiff shell at strong friction, ε = 1, μs = 1 (Fig. 5a)|vanishes|eps|1|fig5a/analysis/D_vs_eps.csv|vanishes
+D_chord, soft shell, ε = 10⁴, μs = 1 (Fig. 5a)|> 0|eps|10000|fig5a/analysis/D_vs_eps.csv|positive
+ROWS
 )
 echo "$table"
 readme=$here/README.md
