@@ -20,6 +20,11 @@ constexpr double kTanHalfMax = 1e8;
 // straight wire (a few ulp of 1), not a sense of rotation: it counts as exact zero.
 constexpr double kZeroTurn = 1e-12;
 
+// The sense of a turning sine n . (t0 x t1): +1, -1, or 0 within round-off of straight.
+int turning_sign(double kn) {
+  return kn > kZeroTurn ? 1 : kn < -kZeroTurn ? -1 : 0;
+}
+
 // Unit tangent of edge e = (x_e, x_{e+1}); false for a zero-length edge.
 bool edge_tangent(Centerline x, std::size_t e, Vec3& t) {
   const Vec3 d = x[e + 1] - x[e];
@@ -146,9 +151,7 @@ Order order_parameter(Centerline x) {
   for (std::size_t i = 1; i + 1 < x.size(); ++i) {
     L += ell[i];
     if (!edge_tangent(x, i - 1, t0) || !edge_tangent(x, i, t1)) continue;
-    const double kn = o.n.dot(t0.cross(t1));
-    if (kn > kZeroTurn) sum += ell[i];
-    if (kn < -kZeroTurn) sum -= ell[i];
+    sum += turning_sign(o.n.dot(t0.cross(t1))) * ell[i];
   }
   o.S = L > 0 ? sum / L : 0.0;
   o.D = 1 - std::abs(o.S);
@@ -235,10 +238,7 @@ SenseBlocks sense_blocks(Centerline x, const Vec3& n, double min_block) {
   for (std::size_t i = 1; i + 1 < x.size(); ++i) {
     ell.push_back(all[i]);
     int s = 0;
-    if (edge_tangent(x, i - 1, t0) && edge_tangent(x, i, t1)) {
-      const double kn = n.dot(t0.cross(t1));
-      s = kn > kZeroTurn ? 1 : kn < -kZeroTurn ? -1 : 0;
-    }
+    if (edge_tangent(x, i - 1, t0) && edge_tangent(x, i, t1)) s = turning_sign(n.dot(t0.cross(t1)));
     sign.push_back(s);
   }
   return sense_blocks(ell, sign, min_block);
