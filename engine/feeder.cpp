@@ -55,6 +55,12 @@ int Feeder::release(RodState& s) {
     s.x[s.n_free][1] += p_.release_noise * gauss(rng_);
     ++s.n_free;
     ++released;
+    if (s.has_twist() && p_.spin_free && s.n_free >= 3) {
+      // Edge j = n_free - 2 is now free; m_j = theta_j - theta_{j-1} + ref_twist_j = 0.
+      const int j = s.n_free - 2;
+      s.theta[j] = s.theta[j - 1] - s.ref_twist[j];
+      s.omega[j] = s.omega[j - 1];
+    }
     // Keep the guide length: append a node one element behind the tail, on the feed axis.
     const Vec3 tail = s.x.back();
     s.x.push_back(tail - Vec3(0.0, 0.0, p_.element_length));

@@ -27,7 +27,8 @@ struct FeederParams {
   double deflection = 0;      // rms transverse deflection of the initial inside nodes [m]
   double release_noise = 0;   // rms transverse offset given to each released node [m]
   std::uint64_t seed = 1;
-  bool twist = false;  // create twist DOFs
+  bool twist = false;      // create twist DOFs
+  bool spin_free = false;  // swivel at the hole (FeederSpin::Free): see release()
 };
 
 class Feeder {
@@ -39,7 +40,9 @@ class Feeder {
   double injected_length(double t) const { return L0_ + p_.speed * t; }
   double z_hole() const { return z_hole_; }
   // Releases guide nodes that passed the hole plane and appends new tail nodes. Returns the
-  // number of nodes released (0 if the DOF layout did not change).
+  // number of nodes released (0 if the DOF layout did not change). With a swivel the edge that
+  // becomes free continues the spun wire: its angle makes the twist m_i at the new joint zero
+  // and it spins with its neighbour, so no twist is created at release.
   int release(RodState& s);
   // Checkpoints: the imperfections' random stream (everything else is set by the parameters).
   void save(StateWriter& out) const;

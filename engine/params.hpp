@@ -13,6 +13,11 @@ enum class EffectMode { Auto, On, Off };
 // Mass model of the wire (integrate/wire_mass.hpp): every mode at the scaled density (uniform),
 // or only the element-scale modes, the slow ones at the physical density (selective).
 enum class MassScaling { Uniform, Selective };
+// How the feeder holds the wire's cross-section at the hole (docs/design.md §2.7): Held, the
+// guide clamps the material frame (no spin about the feed axis; friction's torques wind twist up
+// against it); Free, a swivel: the wire may spin about its axis at the hole and no twisting
+// moment is transmitted there. Acts only with twist DOFs.
+enum class FeederSpin { Held, Free };
 
 struct WireParams {
   double radius = 0.5e-3;            // r [m]
@@ -46,6 +51,7 @@ struct SceneParams {
   std::uint64_t seed = 1;  // seeds the initial transverse perturbation
   ShellKind shell = ShellKind::Elastic;
   double injection_speed = 0.5;  // v [m/s]
+  FeederSpin feeder_spin = FeederSpin::Held;
   WireParams wire;
   NumericsParams numerics;
 

@@ -76,6 +76,8 @@ Assembly assemble(const SceneParams& p) {
   a.feeder.release_noise = SceneConstants::kReleaseNoise * r;
   a.feeder.seed = p.seed;
   a.feeder.twist = twist;
+  a.feeder.spin_free = twist && p.feeder_spin == FeederSpin::Free;
+  a.damping.twist_free_at_guide = a.feeder.spin_free;
 
   a.control.tolerance = p.numerics.tolerance * r;
   a.control.damping_ratio = zeta;
@@ -83,7 +85,7 @@ Assembly assemble(const SceneParams& p) {
   // Wire elasticity.
   a.terms.push_back(std::make_unique<StretchTerm>(m.EA()));
   a.terms.push_back(std::make_unique<BendTerm>(m.EI()));
-  if (twist) a.terms.push_back(std::make_unique<TwistTerm>(m.GJ()));
+  if (twist) a.terms.push_back(std::make_unique<TwistTerm>(m.GJ(), a.feeder.spin_free));
 
   // Coulomb friction, shared by every contact type (off when mu_s = 0).
   FrictionParams fp;

@@ -73,7 +73,9 @@ struct Simulation::Impl {
   double kinetic_energy(int n_free) const {
     const RodState& s = state;
     double E = assembly.mass.kinetic_energy(s.v, n_free);
-    if (s.has_twist()) E += assembly.twist_mass.kinetic_energy(s.omega, std::max(0, n_free - 1));
+    if (s.has_twist())
+      E += assembly.twist_mass.kinetic_energy(s.omega, std::max(0, n_free - 1),
+                                              !assembly.feeder.spin_free);
     const auto& vm = assembly.vertex_mass;
     for (size_t k = 0; k < s.shell_v.size(); ++k) E += 0.5 * vm[k] * s.shell_v[k].squaredNorm();
     return E;
@@ -118,9 +120,10 @@ struct Simulation::Impl {
     }
     alpha.clear();  // no twist DOFs; with them the solve below fills every edge
     if (s.has_twist()) {
-      // Free edges [0, n_free - 1), joined to the kinematic edge into the guide.
+      // Free edges [0, n_free - 1), joined to the kinematic edge into the guide unless the
+      // feeder is a swivel.
       if (s.n_free != twist_mass_nodes) {
-        assembly.twist_mass.factorise(std::max(0, s.n_free - 1), true);
+        assembly.twist_mass.factorise(std::max(0, s.n_free - 1), !assembly.feeder.spin_free);
         twist_mass_nodes = s.n_free;
       }
       assembly.twist_mass.solve(forces.torque, alpha);

@@ -273,6 +273,9 @@ Scene parse_scene(const json& j, const std::string& source) {
   if (e.shell == ShellKind::Elastic && shell_inertia_thickness(e) > e.R() / e.xi)
     scene.resolved["/numerics/shell_inertia_thickness"_json_pointer] =
         e.numerics.shell_inertia_thickness;
+  // feeder_spin came after runs existed: it enters the configuration only where it acts (a swivel
+  // with twist DOFs), so a run whose physics it leaves unchanged keeps its id.
+  if (e.feeder_spin == FeederSpin::Held || !e.twist_enabled()) scene.resolved.erase("feeder_spin");
   scene.numerics_preset = preset;
   return scene;
 }

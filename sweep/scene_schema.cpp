@@ -86,6 +86,18 @@ const std::vector<KeySpec>& scene_schema() {
        .min = Bound{0, false},
        .doc = "injection speed v [m/s]",
        .apply = [](Scene& s, const json& v) { s.engine.injection_speed = num(v); }},
+      {.pointer = "/feeder_spin",
+       .type = Type::Choice,
+       .need = Need::Optional,
+       .default_text = "\"held\" (resolved where it acts)",
+       .choices = {"held", "free"},
+       .doc = "the wire's spin about its axis at the hole: held (the feeder clamps the "
+              "cross-section, twist winds up against it) or free (a swivel: no twisting moment "
+              "at the hole); acts only with twist DOFs",
+       .apply =
+           [](Scene& s, const json& v) {
+             s.engine.feeder_spin = v == "free" ? FeederSpin::Free : FeederSpin::Held;
+           }},
       {.pointer = "/wire/radius",
        .type = Type::Number,
        .need = Need::Optional,

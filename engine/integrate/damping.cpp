@@ -1,5 +1,7 @@
 #include "engine/integrate/damping.hpp"
 
+#include <algorithm>
+
 namespace wirepack {
 
 void RodDamping::add_forces(const RodState& s, RodForces& out) const {
@@ -38,7 +40,8 @@ void RodDamping::add_forces(const RodState& s, RodForces& out) const {
     }
   }
   if (!s.has_twist()) return;
-  for (int i = 1; i < n - 1; ++i) {
+  const int end = p_.twist_free_at_guide ? std::min(n - 1, nf - 1) : n - 1;
+  for (int i = 1; i < end; ++i) {
     const double rel = s.omega[i] - s.omega[i - 1];
     out.torque[i] -= p_.eta_twist * rel;
     out.torque[i - 1] += p_.eta_twist * rel;

@@ -23,10 +23,11 @@
 namespace wirepack {
 
 struct DampingParams {
-  double c_transverse = 0;  // gamma m per node [N s/m]
-  double eta_axial = 0;     // [N s/m]
-  double eta_twist = 0;     // [N m s]
-  double eta_bending = 0;   // eta of the bending-rate dashpot [N s/m]
+  double c_transverse = 0;           // gamma m per node [N s/m]
+  double eta_axial = 0;              // [N s/m]
+  double eta_twist = 0;              // [N m s]
+  double eta_bending = 0;            // eta of the bending-rate dashpot [N s/m]
+  bool twist_free_at_guide = false;  // swivel at the hole: no twist dashpot at the joint node
 };
 
 class RodDamping {

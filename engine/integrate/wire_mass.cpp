@@ -77,22 +77,24 @@ void WireMass::solve(const std::vector<double>& f, std::vector<double>& a) const
 }
 
 template <class T>
-double WireMass::kinetic_impl(const std::vector<T>& v, int n_free) const {
+double WireMass::kinetic_impl(const std::vector<T>& v, int n_free, bool joined_to_guide) const {
   double k = 0.0;
   for (int i = 0; i < n_free; ++i) k += squared(v[i]);
   double e = 0.5 * m_ * k;
   if (uniform()) return e;
   const int n = static_cast<int>(v.size());
   double rel = 0.0;
-  for (int j = 0; j < n_free && j + 1 < n; ++j) rel += squared(T(v[j + 1] - v[j]));
+  const int last = joined_to_guide ? n_free : n_free - 1;  // edges (j, j+1) with j < last
+  for (int j = 0; j < last && j + 1 < n; ++j) rel += squared(T(v[j + 1] - v[j]));
   return e + 0.5 * beta_ * rel;
 }
 
-double WireMass::kinetic_energy(const Vec3List& v, int n_free) const {
-  return kinetic_impl(v, n_free);
+double WireMass::kinetic_energy(const Vec3List& v, int n_free, bool joined_to_guide) const {
+  return kinetic_impl(v, n_free, joined_to_guide);
 }
-double WireMass::kinetic_energy(const std::vector<double>& v, int n_free) const {
-  return kinetic_impl(v, n_free);
+double WireMass::kinetic_energy(const std::vector<double>& v, int n_free,
+                                bool joined_to_guide) const {
+  return kinetic_impl(v, n_free, joined_to_guide);
 }
 
 Vec3 WireMass::momentum(const Vec3List& v, int n_free) const {

@@ -42,9 +42,11 @@ class WireMass {
   // a is resized to f.size(). Vec3 per node, or double per edge (twist).
   void solve(const Vec3List& f, Vec3List& a) const;
   void solve(const std::vector<double>& f, std::vector<double>& a) const;
-  // Kinetic energy 1/2 v^T M v of the free nodes, the edges to the (moving) guide included [J].
-  double kinetic_energy(const Vec3List& v, int n_free) const;
-  double kinetic_energy(const std::vector<double>& v, int n_free) const;
+  // Kinetic energy 1/2 v^T M v of the free nodes, the edge to the (moving) guide included when
+  // `joined_to_guide` (as in factorise) [J].
+  double kinetic_energy(const Vec3List& v, int n_free, bool joined_to_guide = true) const;
+  double kinetic_energy(const std::vector<double>& v, int n_free,
+                        bool joined_to_guide = true) const;
   // Linear momentum M v summed over the free nodes (the guide edge's coupling included) [kg m/s].
   Vec3 momentum(const Vec3List& v, int n_free) const;
 
@@ -52,7 +54,7 @@ class WireMass {
   template <class T>
   void solve_impl(const std::vector<T>& f, std::vector<T>& a) const;
   template <class T>
-  double kinetic_impl(const std::vector<T>& v, int n_free) const;
+  double kinetic_impl(const std::vector<T>& v, int n_free, bool joined_to_guide) const;
 
   double m_, beta_, point_mass_;
   double inv_m_;

@@ -7,11 +7,16 @@
 
 namespace wirepack {
 
-double TwistTerm::accumulate(const RodState& s, RodForces& out) {
+int TwistTerm::end_node(const RodState& s) const {
   const int n = s.num_nodes();
+  return free_at_guide_ ? std::min(n - 1, s.n_free - 1) : n - 1;
+}
+
+double TwistTerm::accumulate(const RodState& s, RodForces& out) {
+  const int end = end_node(s);
   min_rest_ = out.min_rest_length;
   double U = 0.0;
-  for (int i = 1; i + 1 < n; ++i) {
+  for (int i = 1; i < end; ++i) {
     const double lbar = 0.5 * (s.rest_length[i - 1] + s.rest_length[i]);
     const double m = s.theta[i] - s.theta[i - 1] + s.ref_twist[i];
     U += 0.5 * GJ_ * m * m / lbar;
@@ -34,7 +39,8 @@ double TwistTerm::energy(const RodState& s) {
   RodState c = s;
   update_reference_frames(c);
   double U = 0.0;
-  for (int i = 1; i + 1 < c.num_nodes(); ++i) {
+  const int end = end_node(c);
+  for (int i = 1; i < end; ++i) {
     const double lbar = 0.5 * (c.rest_length[i - 1] + c.rest_length[i]);
     const double m = c.theta[i] - c.theta[i - 1] + c.ref_twist[i];
     U += 0.5 * GJ_ * m * m / lbar;

@@ -11,7 +11,10 @@ namespace wirepack {
 
 class TwistTerm : public Term {
  public:
-  explicit TwistTerm(double GJ) : GJ_(GJ) {}
+  // free_at_guide: a swivel at the hole (FeederSpin::Free): the sum stops before the node that
+  // joins the last free edge to the guide, so no twisting moment is transmitted there.
+  explicit TwistTerm(double GJ, bool free_at_guide = false)
+      : GJ_(GJ), free_at_guide_(free_at_guide) {}
   std::string name() const override { return "twist"; }
   TermType type() const override { return TermType::kTwist; }
   double accumulate(const RodState& s, RodForces& out) override;
@@ -21,7 +24,11 @@ class TwistTerm : public Term {
   double omega_max_sq(const RodInertia& inertia) const override;
 
  private:
-  double GJ_;              // torsional stiffness [N m^2]
+  // Nodes i in [1, end) carry twist: all interior nodes, or those before the joint node n_free-1.
+  int end_node(const RodState& s) const;
+
+  double GJ_;  // torsional stiffness [N m^2]
+  bool free_at_guide_;
   double min_rest_ = 0.0;  // shortest rest length at the last accumulate [m]
 };
 

@@ -74,7 +74,8 @@ TEST(SceneConfig, DefaultsFilled) {
   // not resolved (shell_inertia_thickness: resolved where it acts, on thin soft shells, t < r
   // and eps > 350; SceneConfig.ShellInertiaResolvedWhereItActs), so no such run's id moves.
   for (const auto& spec : scene_schema()) {
-    const bool neutral = spec.pointer == "/numerics/shell_inertia_thickness";
+    const bool neutral =
+        spec.pointer == "/numerics/shell_inertia_thickness" || spec.pointer == "/feeder_spin";
     EXPECT_EQ(s.resolved.contains(json::json_pointer(spec.pointer)), !neutral) << spec.pointer;
   }
   EXPECT_EQ(s.engine.numerics.shell_inertia_thickness, 1.0);
@@ -108,6 +109,34 @@ TEST(SceneConfig, ShellInertiaResolvedWhereItActs) {
   given["numerics"]["shell_inertia_thickness"] = 1;
   EXPECT_TRUE(resolved_has(given));
   EXPECT_FALSE(resolved_has(minimal_rigid()));
+}
+
+// feeder_spin is in the resolved scene exactly where it changes the result: a swivel ("free")
+// with twist DOFs (mu_s > 0, or twist "on"). "held" is the engine's behaviour before the key
+// existed, so it never enters the id, given or not.
+TEST(SceneConfig, FeederSpinResolvedWhereItActs) {
+  const auto resolved = [](json j) { return parse_scene(j, "s.json").resolved; };
+  json j = minimal_elastic();  // mu_s = 0.5: twist on
+  EXPECT_FALSE(resolved(j).contains("feeder_spin"));
+  EXPECT_EQ(parse_scene(j, "s.json").engine.feeder_spin, FeederSpin::Held);
+  j["feeder_spin"] = "held";
+  EXPECT_EQ(resolved(j), resolved(minimal_elastic()));
+  j["feeder_spin"] = "free";
+  const Scene s = parse_scene(j, "s.json");
+  EXPECT_EQ(s.engine.feeder_spin, FeederSpin::Free);
+  EXPECT_EQ(s.resolved["feeder_spin"], "free");
+  EXPECT_EQ(parse_scene(s.resolved, "resolved").resolved, s.resolved);  // idempotent
+  json frictionless = j;
+  frictionless["mu_s"] = 0;  // no twist DOFs: nothing to hold
+  EXPECT_FALSE(resolved(frictionless).contains("feeder_spin"));
+  frictionless["numerics"]["twist"] = "on";
+  EXPECT_TRUE(resolved(frictionless).contains("feeder_spin"));
+  json bad = j;
+  bad["feeder_spin"] = "loose";
+  const auto errs = errors_of(bad);
+  ASSERT_EQ(errs.size(), 1u);
+  EXPECT_NE(errs[0].find("/feeder_spin"), std::string::npos) << errs[0];
+  EXPECT_NE(errs[0].find("free"), std::string::npos) << errs[0];
 }
 
 TEST(SceneConfig, CanonicalNumbers) {
@@ -173,7 +202,7 @@ TEST(SceneConfig, MissingRequired) {
 TEST(SceneConfig, UnknownKeys) {
   json j = minimal_elastic();
   j["rh0"] = 20;
-  expect_error(j, "/rh0", "unknown key; valid keys here: eps, injection_speed, l_max");
+  expect_error(j, "/rh0", "unknown key; valid keys here: eps, feeder_spin, injection_speed, l_max");
   j = minimal_elastic();
   j["wire"] = {{"radius", 1e-3}, {"diameter", 2e-3}};
   expect_error(j, "/wire/diameter", "valid keys here: density, poisson_ratio, radius");

@@ -61,27 +61,33 @@ TEST(WireMass, SolveMatchesTheDenseMatrix) {
 }
 
 TEST(WireMass, ScalarSolveAndEnergyMatchTheDenseMatrix) {
-  // The twist angles' chain (one double per edge) through the same factorisation.
-  std::mt19937_64 rng(5);
-  std::normal_distribution<double> g(0.0, 1.0);
-  const int nf = 9, n = 11;  // free edges, then two kinematic ones
-  WireMass M(kMp, kBeta);
-  M.factorise(nf, true);
-  const Eigen::MatrixXd D = dense_mass(nf, true);
-  std::vector<double> a_true(n, 0.0), f(n, 0.0), a;
-  for (int i = 0; i < nf; ++i) a_true[i] = g(rng);
-  for (int i = 0; i < nf; ++i) {
-    for (int j = 0; j < nf; ++j) f[i] += D(i, j) * a_true[j];
+  // The twist angles' chain (one double per edge) through the same factorisation; joined to the
+  // kinematic edge (the feeder holds the spin) or not (a swivel at the hole).
+  for (bool joined : {true, false}) {
+    SCOPED_TRACE(joined ? "joined" : "swivel");
+    std::mt19937_64 rng(5);
+    std::normal_distribution<double> g(0.0, 1.0);
+    const int nf = 9, n = 11;  // free edges, then two kinematic ones
+    WireMass M(kMp, kBeta);
+    M.factorise(nf, joined);
+    const Eigen::MatrixXd D = dense_mass(nf, joined);
+    std::vector<double> a_true(n, 0.0), f(n, 0.0), a;
+    for (int i = 0; i < nf; ++i) a_true[i] = g(rng);
+    for (int i = 0; i < nf; ++i) {
+      for (int j = 0; j < nf; ++j) f[i] += D(i, j) * a_true[j];
+    }
+    f[nf] = 7.0;  // kinematic rows are ignored
+    M.solve(f, a);
+    ASSERT_EQ(static_cast<int>(a.size()), n);
+    for (int i = 0; i < n; ++i)
+      EXPECT_NEAR(a[i], a_true[i], 1e-12 * (1 + std::abs(a_true[i]))) << i;
+    // Kinetic energy 1/2 w^T M w with the guide edge at rest: the dense form over the free edges.
+    std::vector<double> w(n, 0.0);
+    Eigen::VectorXd wf(nf);
+    for (int i = 0; i < nf; ++i) w[i] = wf[i] = g(rng);
+    EXPECT_NEAR(M.kinetic_energy(w, nf, joined), 0.5 * wf.dot(D * wf),
+                1e-12 * 0.5 * wf.dot(D * wf));
   }
-  f[nf] = 7.0;  // kinematic rows are ignored
-  M.solve(f, a);
-  ASSERT_EQ(static_cast<int>(a.size()), n);
-  for (int i = 0; i < n; ++i) EXPECT_NEAR(a[i], a_true[i], 1e-12 * (1 + std::abs(a_true[i]))) << i;
-  // Kinetic energy 1/2 w^T M w with the guide edge at rest: the dense form over the free edges.
-  std::vector<double> w(n, 0.0);
-  Eigen::VectorXd wf(nf);
-  for (int i = 0; i < nf; ++i) w[i] = wf[i] = g(rng);
-  EXPECT_NEAR(M.kinetic_energy(w, nf), 0.5 * wf.dot(D * wf), 1e-12 * 0.5 * wf.dot(D * wf));
 }
 
 TEST(WireMass, UniformIsTheLumpedMass) {

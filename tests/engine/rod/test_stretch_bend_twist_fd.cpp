@@ -50,5 +50,18 @@ TEST(RodFd, TwistGradientMatchesFiniteDifferences) {
   }
 }
 
+// With a swivel at the hole (FeederSpin::Free) the sum stops before the node joining the last
+// free edge to the guide: the gradient of the shorter sum, on a rod whose last three nodes are
+// kinematic.
+TEST(RodFd, TwistWithASwivelAtTheGuideMatchesFiniteDifferences) {
+  const auto mat = RodMaterial::from(WireParams{});
+  for (unsigned seed = 1; seed <= 3; ++seed) {
+    TwistTerm term(mat.GJ(), true);
+    RodState s = random_rod(12, 0.5e-3, true, seed);
+    s.n_free = 9;
+    expect_consistent(fd_check(term, s, 0.5e-3, default_fd_steps()));
+  }
+}
+
 }  // namespace
 }  // namespace wirepack
