@@ -273,6 +273,13 @@ std::vector<HardScene> hard_scenes() {
                  j["numerics"] = "fast";
                  return j;
                }()});
+  // High friction with a swivel at the hole (feeder_spin "free"): the friction torques spin the
+  // wire as a whole instead of twisting it against the feeder; the second corner above, swivel.
+  s.push_back({"swivel_rho10_xi10_eps1_mu1p5", [] {
+                 json j = elastic(10, 10, 1, 1.5, 12);
+                 j["feeder_spin"] = "free";
+                 return j;
+               }()});
   // The coarsest and the finest numerics presets at the first corner (whose row above is the
   // default preset): fast to the same l, accurate just past the head-on contact.
   for (const auto& [preset, l_max] : {std::pair{"fast", 15.0}, std::pair{"accurate", 2.2}}) {
