@@ -197,6 +197,13 @@ void group(Analysis& a, const std::optional<sweep::Sweep>& sweep) {
   }
   std::vector<GridPoint> points;
   for (auto& [key, p] : by_key) points.push_back(std::move(p));
+  // A key resolved only where it acts, present at some points: the others get its meaning.
+  for (const auto& [ptr, absent] : sweep::values_where_not_resolved()) {
+    const bool somewhere = std::any_of(points.begin(), points.end(),
+                                       [&](const GridPoint& p) { return p.leaves.contains(ptr); });
+    if (!somewhere) continue;
+    for (auto& p : points) p.leaves.emplace(ptr, absent);
+  }
   a.axes = swept_parameters(points, sweep);
   // Points ordered by the swept parameters (the first slowest), ties by their scene.
   std::sort(points.begin(), points.end(), [&](const GridPoint& x, const GridPoint& y) {

@@ -34,6 +34,11 @@ json point_scene(const json& resolved_scene) {
   return point;
 }
 
+const std::map<std::string, json>& values_where_not_resolved() {
+  static const std::map<std::string, json> table = {{"/feeder_spin", "held"}};
+  return table;
+}
+
 std::string point_key(const json& resolved_scene) {
   return resolved_scene.is_object() ? canonical_json(point_scene(resolved_scene)) : "";
 }
@@ -189,11 +194,16 @@ Sweep parse_sweep(const json& j, const std::string& source) {
         run.index = sw.runs.size();
         run.point = p;
         run.point_values = json::object();
-        for (const auto& axis : sw.axes)  // the preset is not in the resolved scene
-          run.point_values[axis.key] =
-              axis.pointer == "/numerics/preset"
-                  ? json(s.numerics_preset)
-                  : std::as_const(s.resolved).at(json::json_pointer(axis.pointer));
+        // The preset is not in the resolved scene, nor are keys resolved only where they act
+        // (feeder_spin, shell_inertia_thickness): those take the value the grid gave.
+        for (std::size_t a = 0; a < sw.axes.size(); ++a) {
+          const auto& axis = sw.axes[a];
+          const json::json_pointer ptr(axis.pointer);
+          run.point_values[axis.key] = axis.pointer == "/numerics/preset" ? json(s.numerics_preset)
+                                       : s.resolved.contains(ptr)
+                                           ? std::as_const(s.resolved).at(ptr)
+                                           : point_values[p][a];
+        }
         run.seed = seed;
         run.id = run_id(s.resolved);
         run.file = run_file_name(sw.axes, point_values[p], seed, run.id);

@@ -7,6 +7,7 @@
 // reported against the sweep file's own pointers (`sweep.json: /grid/mu_s/2: must be >= 0`).
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -82,6 +83,9 @@ nlohmann::json point_scene(const nlohmann::json& resolved_scene);
 // canonical_json(point_scene(...)): the key that groups runs into grid points ("" when the
 // scene is not an object).
 std::string point_key(const nlohmann::json& resolved_scene);
+// Keys resolved only where they act whose absence has one meaning, with that value
+// (feeder_spin: "held"), for tables that compare points with and without them.
+const std::map<std::string, nlohmann::json>& values_where_not_resolved();
 
 // Expected relative cost of a run, for longest-first scheduling (not a time in any unit).
 // With L = l_max R injected, elements of length ell and the mass scaling q, the step is bounded

@@ -72,6 +72,31 @@ TEST(Reductions, GroupsRunsByPointKey) {
   EXPECT_EQ(a.runs[3].seed, json(2));
 }
 
+// feeder_spin enters a run's configuration only where it acts ("free"): grouped with runs
+// without it, those get its meaning, "held", so the swept axis has both values and no blank.
+TEST(Reductions, AKeyResolvedOnlyWhereItActsGetsItsMeaningElsewhere) {
+  Analysis a;
+  a.settings = default_analysis_settings();
+  RunData held = made_up_run(0.5, 1, 0.6), free = made_up_run(0.5, 1, 0.2);
+  json config = free.config;
+  config["feeder_spin"] = "free";
+  set_run_config(free, config);
+  a.runs = {held, free};
+  for (auto& r : a.runs) summarize_run(r, a.settings);
+  group(a, std::nullopt);
+  ASSERT_EQ(a.points.size(), 2u);
+  EXPECT_EQ(a.axes, std::vector<std::string>{"/feeder_spin"});
+  EXPECT_EQ(leaf(a.points[0], "/feeder_spin"), json("free"));
+  EXPECT_EQ(leaf(a.points[1], "/feeder_spin"), json("held"));
+  // Without any run that has it, the key stays out of the points (and of every table).
+  Analysis b;
+  b.settings = a.settings;
+  b.runs = {made_up_run(0, 1, 0.2), made_up_run(0.5, 1, 0.6)};
+  for (auto& r : b.runs) summarize_run(r, b.settings);
+  group(b, std::nullopt);
+  EXPECT_TRUE(leaf(b.points[0], "/feeder_spin").is_null());
+}
+
 // D is the maximum of D(l) over the D window and D_avg its mean; U_b_hat, K, N are the last rows;
 // no Purohit prediction without the radii.
 TEST(Reductions, SummarizesOneRun) {

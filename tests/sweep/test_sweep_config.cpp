@@ -157,6 +157,22 @@ TEST(SweepConfig, NestedAxesByPointerAndFileNames) {
       << sw.runs[2].file;
 }
 
+// An axis over a key that is resolved only where it acts (feeder_spin: "free" with twist): the
+// runs where it does not act keep the grid's value as their point value, and the two variants get
+// distinct ids.
+TEST(SweepConfig, AxisOverAKeyResolvedOnlyWhereItActs) {
+  const Sweep sw =
+      parse_text(R"({"name": "spin", "base": {"rho": 10, "mu_s": 0.5, "shell": "rigid"},
+    "grid": {"feeder_spin": ["held", "free"]}, "seeds": 1})");
+  ASSERT_EQ(sw.runs.size(), 2u);
+  EXPECT_EQ(sw.runs[0].point_values["feeder_spin"], "held");
+  EXPECT_EQ(sw.runs[1].point_values["feeder_spin"], "free");
+  EXPECT_EQ(sw.runs[0].scene.engine.feeder_spin, FeederSpin::Held);
+  EXPECT_EQ(sw.runs[1].scene.engine.feeder_spin, FeederSpin::Free);
+  EXPECT_NE(sw.runs[0].id, sw.runs[1].id);
+  EXPECT_EQ(sw.runs[0].file.rfind("runs/feeder_spin-held_s1_", 0), 0u) << sw.runs[0].file;
+}
+
 struct BadSweep {
   const char* name;
   const char* text;
