@@ -198,7 +198,9 @@ void group(Analysis& a, const std::optional<sweep::Sweep>& sweep) {
   std::vector<GridPoint> points;
   for (auto& [key, p] : by_key) points.push_back(std::move(p));
   // A key resolved only where it acts, present at some points: the others get its meaning.
-  for (const auto& [ptr, absent] : sweep::values_where_not_resolved()) {
+  for (const auto& [key_ptr, absent] : sweep::values_where_not_resolved()) {
+    // A named copy: clang before 16 cannot capture a structured binding in a lambda.
+    const std::string& ptr = key_ptr;
     const bool somewhere = std::any_of(points.begin(), points.end(),
                                        [&](const GridPoint& p) { return p.leaves.contains(ptr); });
     if (!somewhere) continue;
