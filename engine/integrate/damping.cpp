@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "engine/rod/twist.hpp"
+
 namespace wirepack {
 
 void RodDamping::add_forces(const RodState& s, RodForces& out) const {
@@ -40,7 +42,7 @@ void RodDamping::add_forces(const RodState& s, RodForces& out) const {
     }
   }
   if (!s.has_twist()) return;
-  const int end = p_.twist_free_at_guide ? std::min(n - 1, nf - 1) : n - 1;
+  const int end = twist_end_node(s, p_.twist_free_at_guide);  // the same nodes as the twist sum
   for (int i = 1; i < end; ++i) {
     const double rel = s.omega[i] - s.omega[i - 1];
     out.torque[i] -= p_.eta_twist * rel;

@@ -7,13 +7,8 @@
 
 namespace wirepack {
 
-int TwistTerm::end_node(const RodState& s) const {
-  const int n = s.num_nodes();
-  return free_at_guide_ ? std::min(n - 1, s.n_free - 1) : n - 1;
-}
-
 double TwistTerm::accumulate(const RodState& s, RodForces& out) {
-  const int end = end_node(s);
+  const int end = twist_end_node(s, free_at_guide_);
   min_rest_ = out.min_rest_length;
   double U = 0.0;
   for (int i = 1; i < end; ++i) {
@@ -39,7 +34,7 @@ double TwistTerm::energy(const RodState& s) {
   RodState c = s;
   update_reference_frames(c);
   double U = 0.0;
-  const int end = end_node(c);
+  const int end = twist_end_node(c, free_at_guide_);
   for (int i = 1; i < end; ++i) {
     const double lbar = 0.5 * (c.rest_length[i - 1] + c.rest_length[i]);
     const double m = c.theta[i] - c.theta[i - 1] + c.ref_twist[i];

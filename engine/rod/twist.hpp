@@ -5,9 +5,19 @@
 // d ref_twist_i / d e^{i-1} = kb_i / (2 |e^{i-1}|), d ref_twist_i / d e^i = kb_i / (2 |e^i|)
 // with the curvature binormal kb_i = 2 t_{i-1} x t_i / (1 + t_{i-1} . t_i). accumulate()
 // expects reference frames updated to the current positions (update_reference_frames).
+#include <algorithm>
+
 #include "engine/term.hpp"
 
 namespace wirepack {
+
+// Nodes i in [1, end) carry twist and its dashpot: all interior nodes, or, with a swivel at the
+// hole (free_at_guide), those before the node n_free - 1 that joins the last free edge to the
+// guide.
+inline int twist_end_node(const RodState& s, bool free_at_guide) {
+  const int n = s.num_nodes();
+  return free_at_guide ? std::min(n - 1, s.n_free - 1) : n - 1;
+}
 
 class TwistTerm : public Term {
  public:
@@ -24,9 +34,6 @@ class TwistTerm : public Term {
   double omega_max_sq(const RodInertia& inertia) const override;
 
  private:
-  // Nodes i in [1, end) carry twist: all interior nodes, or those before the joint node n_free-1.
-  int end_node(const RodState& s) const;
-
   double GJ_;  // torsional stiffness [N m^2]
   bool free_at_guide_;
   double min_rest_ = 0.0;  // shortest rest length at the last accumulate [m]
