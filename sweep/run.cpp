@@ -240,6 +240,7 @@ RunOutcome run_scene(const Scene& scene, const std::string& out_path, std::ostre
 
   out.status = record.status;
   out.failure = record.failure;
+  out.started = record.started;
   out.l = sim ? sim->l() : 0.0;
   out.steps = sim ? sim->steps() : 0;
   out.wall_s = wall();

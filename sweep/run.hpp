@@ -20,6 +20,7 @@ struct RunOutcome {
   double l = 0;           // injected length / R reached
   long steps = 0;         // accepted steps
   double wall_s = 0;      // wall-clock duration, resumed runs' earlier part too [s]
+  std::string started;    // when the run first started (ISO 8601 UTC; a resumed run's first part)
   double resumed_l = -1;  // l of the checkpoint this run resumed from (-1: started at l = 0)
   // Why a checkpoint was not used or could not be written ("" when nothing went wrong); the
   // run itself is unaffected by it.

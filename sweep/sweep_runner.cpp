@@ -230,7 +230,8 @@ void execute(SweepState& st, ManifestEntry& e, const SweepOptions& opt) noexcept
     const auto t0 = clock_type::now();
     EntryStatus status = EntryStatus::Failed;
     std::string reason;
-    double run_wall = -1;  // the run's whole wall time, a resumed run's earlier part included
+    double run_wall = -1;     // the run's whole wall time, a resumed run's earlier part included
+    std::string run_started;  // when the run first started, as its file says (resumed: earlier)
     try {
       // The run's own progress is not shown inside a sweep (null stream).
       // A resumed run says so when it resumes (its own progress is not shown).
@@ -257,6 +258,7 @@ void execute(SweepState& st, ManifestEntry& e, const SweepOptions& opt) noexcept
       status = r.status == RunStatus::Complete ? EntryStatus::Complete : EntryStatus::Failed;
       reason = r.failure;
       run_wall = r.wall_s;
+      run_started = r.started;
       std::lock_guard lock(st.mutex);
       if (!r.checkpoint_note.empty()) st.warn(e.run->file + ": " + r.checkpoint_note);
     } catch (const RunFileError& ex) {
@@ -274,6 +276,7 @@ void execute(SweepState& st, ManifestEntry& e, const SweepOptions& opt) noexcept
     e.reason = reason;
     e.wall_s = wall;
     e.finished = utc_now_iso8601();
+    if (!run_started.empty()) e.started = run_started;  // the manifest agrees with the file
     ++st.finished;
     st.finished_wall += wall;
     st.changed = true;

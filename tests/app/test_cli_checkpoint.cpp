@@ -15,6 +15,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "cli_runner.hpp"
 #include "sweep/run_file.hpp"
@@ -214,6 +215,8 @@ TEST(CliCheckpoint, SigintStopsASweep) {
   EXPECT_NE(manifest.find("\"pending\": " + std::to_string(4 - finished)), std::string::npos)
       << manifest;
 
+  // Start times have a resolution of 1 s: resume in a later second than the first start.
+  std::this_thread::sleep_for(std::chrono::milliseconds(1100));
   const auto again = run_wirepack(dir, "sweep w.json --out out --threads 2");
   ASSERT_EQ(again.code, 0) << again.err;
   EXPECT_NE(again.err.find("resumed from its checkpoint"), std::string::npos) << again.err;
@@ -221,6 +224,16 @@ TEST(CliCheckpoint, SigintStopsASweep) {
     expect_same_run(e.path(), dir / "out/runs" / e.path().filename());
   for (const auto& e : fs::directory_iterator(dir / "out/runs"))
     EXPECT_EQ(e.path().extension(), ".h5") << e.path();
+  // The manifest says when each run started as its file does: a resumed run's first start, not
+  // the resumption (rereading the files on a later resume must change nothing).
+  const auto m = nlohmann::json::parse(read_text(dir / "out/manifest.json"));
+  ASSERT_EQ(m.at("runs").size(), 4u);
+  for (const auto& entry : m.at("runs")) {
+    const std::string file = entry.at("file");
+    EXPECT_EQ(entry.at("started").get<std::string>(),
+              sweep::read_run_file(dir / ("out/" + file)).started)
+        << file;
+  }
 }
 
 }  // namespace
