@@ -1,5 +1,6 @@
 #include "sweep/run.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -14,6 +15,7 @@
 #include "sweep/run_checkpoint.hpp"
 #include "sweep/shell_fields.hpp"
 #include "sweep/sweep_config.hpp"
+#include "sweep/thread_governor.hpp"
 
 namespace wirepack::sweep {
 
@@ -183,6 +185,10 @@ RunOutcome run_scene(const Scene& scene, const std::string& out_path, std::ostre
       next_row = every * (std::floor(sim->l() / every) + 1);
       next_snap = snap_every * (std::floor(sim->l() / snap_every) + 1);
     }
+    ThreadGovernor governor;  // threads window by window, up to threads()
+    long window_steps = 0;    // steps of the window being run
+    double window_s = 0;      // wall time of its steps [s]
+    if (threads) sim->set_threads(governor.next(threads()));
     double next_report = wall() + 2.0;
     double next_checkpoint = wall() + checkpoint.every_s;
     while (!sim->finished()) {
@@ -200,8 +206,19 @@ RunOutcome run_scene(const Scene& scene, const std::string& out_path, std::ostre
         }
         return out;  // status Running
       }
-      if (threads && sim->steps() % 64 == 0) sim->set_threads(threads());
+      if (threads && (window_steps >= ThreadGovernor::kWindowSteps || governor.lost(window_s))) {
+        // A window ends (or a probe has lost): time it (steps only, not the output), then pick
+        // the next window's threads (sweep/thread_governor.hpp).
+        governor.record(window_s / static_cast<double>(std::max(1L, window_steps)));
+        window_steps = 0;
+        window_s = 0;
+        sim->set_threads(governor.next(threads()));
+      }
+      const auto s0 = clock::now();
+      const long steps_before = sim->steps();
       sim->step();
+      window_s += std::chrono::duration<double>(clock::now() - s0).count();
+      window_steps += sim->steps() - steps_before;
       const double l = sim->l();
       if (l >= next_row) {
         rec.row(*sim, wall());

@@ -50,10 +50,11 @@ const std::vector<std::string>& series_names();
 // reason. The run file is written once, at the end (write-then-rename); a failure to write it
 // throws RunFileError. `threads` (empty: 1) says how many threads the simulation's force loops
 // may use; it is asked again every 64 steps, so a sweep can give its idle cores to the runs
-// still going. The result does not depend on it (bitwise). `series`: the columns recorded, one
-// value of each per row, in its order. `checkpoint`: see CheckpointOptions; a resumed run's file
-// is bitwise the uninterrupted run's (its wall-time column apart); the checkpoint is removed once
-// the run file is written.
+// still going, and the run uses fewer while more are measured to be slower (a busy machine;
+// sweep/thread_governor.hpp). The result does not depend on it (bitwise). `series`: the columns
+// recorded, one value of each per row, in its order. `checkpoint`: see CheckpointOptions; a resumed
+// run's file is bitwise the uninterrupted run's (its wall-time column apart); the checkpoint is
+// removed once the run file is written.
 RunOutcome run_scene(const Scene& scene, const std::string& out_path, std::ostream* progress,
                      const std::function<int()>& threads = {},
                      const SeriesList& series = recorded_series(),

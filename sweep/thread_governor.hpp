@@ -1,0 +1,50 @@
+#pragma once
+// How many threads one run's force loops use, window by window of steps. A run may use up to
+// `allowed` threads (its --threads, or the idle cores a sweep gives it), but more threads are not
+// always faster: each step forks and joins about twenty short parallel loops, so when another
+// process holds a core the threads wait at every join for a descheduled partner. Measured on the
+// 2-core VM with one core busy: a 0.6 s rigid run took over 10 min with 2 threads. The governor
+// starts on 1 thread, times the windows at its current choice and, now and then, one window at
+// the other choice
+// (1 thread, or all allowed); it keeps the faster and probes again after an interval that
+// doubles while the choice holds. A probe is cut short once it has taken as long as a whole
+// window at the choice (it has lost), so a probe costs at most about one window. The result of
+// a run does not depend on its thread count (bitwise), so this changes only its wall time.
+#include <cstdint>
+
+namespace wirepack::sweep {
+
+class ThreadGovernor {
+ public:
+  static constexpr int kWindowSteps = 64;   // steps per window
+  static constexpr int kFirstProbe = 1;     // windows at all allowed threads before the first probe
+  static constexpr int kAfterSwitch = 4;    // windows before the probe after a switch
+  static constexpr int kLongestWait = 512;  // the probe interval stops doubling here [windows]
+  static constexpr double kMargin = 0.9;    // the other choice must take < 90 % of the time
+
+  // Threads for the next window, given how many are allowed now (>= 1).
+  int next(int allowed);
+  // The wall time of the window just run, per step [s].
+  void record(double seconds_per_step);
+  // Whether the probe being run has already lost: `elapsed_s` of its steps exceed a whole
+  // window's time at the choice. The caller then ends the window (and records it) at once.
+  bool lost(double elapsed_s) const {
+    return probing_ && elapsed_s > kWindowSteps * last_at_choice_;
+  }
+
+  int choice() const { return choice_; }
+  std::int64_t probes() const { return probes_; }
+  std::int64_t switches() const { return switches_; }
+
+ private:
+  int allowed_ = 0;             // the allowed count the state refers to (0: none yet)
+  int choice_ = 1;              // threads used outside probes
+  int window_threads_ = 1;      // threads of the window being run
+  bool probing_ = false;        // the window being run is a probe
+  int wait_ = kFirstProbe;      // windows between probes
+  int since_probe_ = 0;         // windows at the choice since the last probe
+  double last_at_choice_ = -1;  // seconds per step of the last window at the choice
+  std::int64_t probes_ = 0, switches_ = 0;
+};
+
+}  // namespace wirepack::sweep
