@@ -4,6 +4,7 @@
 // run's result does not depend on its thread count is tested in tests/engine (bitwise).
 #include "sweep/thread_governor.hpp"
 
+#include <algorithm>
 #include <functional>
 #include <random>
 
