@@ -1,17 +1,21 @@
 #!/usr/bin/env bash
-# Does the wire's twist make the coil reverse? (results/paper/README.md, "What D counts"). Fig. 5b's
-# scene (rho = 20, xi = 10, eps = 1e3, default numerics) at mu_s = 0.75 (seeds 1, 2) and 1
-# (seed 1), to l = 36, snapshots every 6 l, in two variants beside Fig. 5b's committed runs (twist
-# on, the feeder holding the wire's spin):
-#   NAME_notwist.json  numerics.twist = "off": no twist DOFs, no friction torque, no twist energy;
-#   NAME_swivel.json   twist on, feeder_spin = "free": the wire may spin at the hole, so twist is
-#                      not wound up against the feeder.
+# What in the model makes the coil reverse, or could make it disorder early? (results/paper/
+# README.md, "What D counts"). Fig. 5b's scene (rho = 20, xi = 10, eps = 1e3, default numerics)
+# with one thing changed, beside Fig. 5b's committed runs (twist on, the feeder holding the
+# wire's spin, damping ratio 0.05, shell mesh 2 r). Each scene NAME_VARIANT.json:
+#   notwist    numerics.twist = "off": no twist DOFs, no friction torque, no twist energy;
+#   swivel     feeder_spin = "free": the wire may spin at the hole, so twist is not wound up
+#              against the feeder;
+#   lowdamp    numerics.damping_ratio = 0.01 (default 0.05): every dashpot a fifth as strong;
+#   fineshell  numerics.shell_mesh_size = r (default 2 r): about 4x the shell's faces.
+# mu_s = 0.75 (seeds 1, 2) and 1 (seed 1) go to l = 36 with snapshots every 6 l;
 # fig4_mu_s-0.5_s1_swivel.json is Fig. 4's crumpling run (mu_s = 0.5, seed 1) with the swivel, to
 # l = 100, snapshots every 10 l, beside the committed Fig. 4 run.
 # Writes summary.csv: per run and snapshot, the order parameters and the sense blocks of
 # `wirepack export --profile`, and U_t / U_b from the series row nearest the snapshot. The run
-# files go to runs/ (not committed). 5-10 min a run to l = 36 on one core, ~40 min to l = 100.
-# Usage: bash results/paper/twist_check/make.sh [WIREPACK]
+# files go to runs/ (not committed); a run already there is not run again. 5-10 min a run to
+# l = 36 on one core (fineshell: ~4x), ~40 min to l = 100.
+# Usage: bash results/paper/model_check/make.sh [WIREPACK]
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 wp=${1:-$here/../../../build/wirepack}
@@ -20,7 +24,7 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 echo "run,mu_s,seed,variant,l,D,D_chord,D_kappa,chord_R,reversals,order_length_R,Ut_over_Ub" \
   > "$tmp/summary.csv"
-for scene in "$here"/*_notwist.json "$here"/*_swivel.json; do
+for scene in "$here"/*.json; do
   name=$(basename "$scene" .json)
   run=$here/runs/$name.h5
   [ -f "$run" ] || "$wp" run "$scene" --out "$run" > /dev/null
