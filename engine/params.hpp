@@ -52,6 +52,8 @@ struct SceneParams {
   ShellKind shell = ShellKind::Elastic;
   double injection_speed = 0.5;  // v [m/s]
   FeederSpin feeder_spin = FeederSpin::Held;
+  // k_t / k_n of a sticking contact; 0: Mindlin's 2 (1 - nu_w) / (2 - nu_w) [-].
+  double friction_stiffness_ratio = 0.0;
   WireParams wire;
   NumericsParams numerics;
 

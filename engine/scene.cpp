@@ -91,7 +91,9 @@ Assembly assemble(const SceneParams& p) {
   FrictionParams fp;
   fp.mu_s = p.mu_s;
   fp.mu_d = p.mu_d;
-  fp.stiffness_ratio = 2.0 * (1.0 - w.poisson_ratio) / (2.0 - w.poisson_ratio);  // Mindlin
+  fp.stiffness_ratio = p.friction_stiffness_ratio > 0.0
+                           ? p.friction_stiffness_ratio
+                           : 2.0 * (1.0 - w.poisson_ratio) / (2.0 - w.poisson_ratio);  // Mindlin
   fp.damping_ratio = zeta;
 
   if (p.shell == ShellKind::Rigid) {

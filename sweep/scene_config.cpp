@@ -276,6 +276,9 @@ Scene parse_scene(const json& j, const std::string& source) {
   // feeder_spin came after runs existed: it enters the configuration only where it acts (a swivel
   // with twist DOFs), so a run whose physics it leaves unchanged keeps its id.
   if (e.feeder_spin == FeederSpin::Held || !e.twist_enabled()) scene.resolved.erase("feeder_spin");
+  // friction_stiffness_ratio came after runs existed: resolved only where given and acting
+  // (friction on); absent, the engine uses Mindlin's ratio as before.
+  if (e.mu_s == 0.0) scene.resolved.erase("friction_stiffness_ratio");
   scene.numerics_preset = preset;
   return scene;
 }

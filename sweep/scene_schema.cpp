@@ -98,6 +98,14 @@ const std::vector<KeySpec>& scene_schema() {
            [](Scene& s, const json& v) {
              s.engine.feeder_spin = v == "free" ? FeederSpin::Free : FeederSpin::Held;
            }},
+      {.pointer = "/friction_stiffness_ratio",
+       .type = Type::Number,
+       .need = Need::Optional,
+       .default_text = "Mindlin: 2 (1 - nu_w) / (2 - nu_w) (resolved where given)",
+       .min = Bound{0, false},
+       .doc = "k_t / k_n: tangential over normal stiffness of a sticking contact (every "
+              "contact type); acts only with friction",
+       .apply = [](Scene& s, const json& v) { s.engine.friction_stiffness_ratio = num(v); }},
       {.pointer = "/wire/radius",
        .type = Type::Number,
        .need = Need::Optional,

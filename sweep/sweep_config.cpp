@@ -35,7 +35,8 @@ json point_scene(const json& resolved_scene) {
 }
 
 const std::map<std::string, json>& values_where_not_resolved() {
-  static const std::map<std::string, json> table = {{"/feeder_spin", "held"}};
+  static const std::map<std::string, json> table = {{"/feeder_spin", "held"},
+                                                    {"/friction_stiffness_ratio", "mindlin"}};
   return table;
 }
 

@@ -84,7 +84,8 @@ nlohmann::json point_scene(const nlohmann::json& resolved_scene);
 // scene is not an object).
 std::string point_key(const nlohmann::json& resolved_scene);
 // Keys resolved only where they act whose absence has one meaning, with that value
-// (feeder_spin: "held"), for tables that compare points with and without them.
+// (feeder_spin: "held"; friction_stiffness_ratio: "mindlin"), for tables that compare points
+// with and without them.
 const std::map<std::string, nlohmann::json>& values_where_not_resolved();
 
 // Expected relative cost of a run, for longest-first scheduling (not a time in any unit).

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "engine/elastic_runs.hpp"
+#include "engine/scene.hpp"
 
 namespace wirepack {
 namespace {
@@ -52,6 +53,17 @@ TEST(ElasticSimulation, SceneAssemblesShellTermsAndNoWall) {
   EXPECT_EQ(Simulation(p).term_names(),
             (std::vector<std::string>{"stretch", "bend", "membrane", "shell_bending", "wire_shell",
                                       "self_contact"}));
+}
+
+// The stick stiffness reaches the contacts: Mindlin's 2 (1 - nu) / (2 - nu) = 0.8 at the
+// default nu_w = 1/3 unless the scene sets friction_stiffness_ratio.
+TEST(ElasticSimulation, FrictionStiffnessRatioIsMindlinsUnlessSet) {
+  SceneParams p = elastic_scene(10, 1000, 0.5, 1);
+  EXPECT_NEAR(assemble(p).wire_shell_params.friction.stiffness_ratio, 0.8, 1e-15);
+  p.wire.poisson_ratio = 0.25;
+  EXPECT_NEAR(assemble(p).wire_shell_params.friction.stiffness_ratio, 1.5 / 1.75, 1e-15);
+  p.friction_stiffness_ratio = 0.2;
+  EXPECT_EQ(assemble(p).wire_shell_params.friction.stiffness_ratio, 0.2);
 }
 
 }  // namespace

@@ -74,8 +74,9 @@ TEST(SceneConfig, DefaultsFilled) {
   // not resolved (shell_inertia_thickness: resolved where it acts, on thin soft shells, t < r
   // and eps > 350; SceneConfig.ShellInertiaResolvedWhereItActs), so no such run's id moves.
   for (const auto& spec : scene_schema()) {
-    const bool neutral =
-        spec.pointer == "/numerics/shell_inertia_thickness" || spec.pointer == "/feeder_spin";
+    const bool neutral = spec.pointer == "/numerics/shell_inertia_thickness" ||
+                         spec.pointer == "/feeder_spin" ||
+                         spec.pointer == "/friction_stiffness_ratio";
     EXPECT_EQ(s.resolved.contains(json::json_pointer(spec.pointer)), !neutral) << spec.pointer;
   }
   EXPECT_EQ(s.engine.numerics.shell_inertia_thickness, 1.0);
@@ -109,6 +110,27 @@ TEST(SceneConfig, ShellInertiaResolvedWhereItActs) {
   given["numerics"]["shell_inertia_thickness"] = 1;
   EXPECT_TRUE(resolved_has(given));
   EXPECT_FALSE(resolved_has(minimal_rigid()));
+}
+
+// friction_stiffness_ratio is resolved where it is given and friction acts (mu_s > 0); absent,
+// the engine takes Mindlin's ratio (0 here) and the run's id is the one it had before the key.
+TEST(SceneConfig, FrictionStiffnessRatioResolvedWhereGiven) {
+  const auto resolved = [](json j) { return parse_scene(j, "s.json").resolved; };
+  json j = minimal_elastic();  // mu_s = 0.5
+  EXPECT_FALSE(resolved(j).contains("friction_stiffness_ratio"));
+  EXPECT_EQ(parse_scene(j, "s.json").engine.friction_stiffness_ratio, 0.0);
+  j["friction_stiffness_ratio"] = 0.2;
+  const Scene s = parse_scene(j, "s.json");
+  EXPECT_EQ(s.engine.friction_stiffness_ratio, 0.2);
+  EXPECT_EQ(s.resolved["friction_stiffness_ratio"], 0.2);
+  EXPECT_EQ(parse_scene(s.resolved, "resolved").resolved, s.resolved);  // idempotent
+  json frictionless = j;
+  frictionless["mu_s"] = 0;
+  EXPECT_FALSE(resolved(frictionless).contains("friction_stiffness_ratio"));
+  j["friction_stiffness_ratio"] = 0;
+  expect_error(j, "/friction_stiffness_ratio", "> 0");
+  j["friction_stiffness_ratio"] = "stiff";
+  expect_error(j, "/friction_stiffness_ratio", "number");
 }
 
 // feeder_spin is in the resolved scene exactly where it changes the result: a swivel ("free")
@@ -202,7 +224,9 @@ TEST(SceneConfig, MissingRequired) {
 TEST(SceneConfig, UnknownKeys) {
   json j = minimal_elastic();
   j["rh0"] = 20;
-  expect_error(j, "/rh0", "unknown key; valid keys here: eps, feeder_spin, injection_speed, l_max");
+  expect_error(j, "/rh0",
+               "unknown key; valid keys here: eps, feeder_spin, friction_stiffness_ratio, "
+               "injection_speed, l_max");
   j = minimal_elastic();
   j["wire"] = {{"radius", 1e-3}, {"diameter", 2e-3}};
   expect_error(j, "/wire/diameter", "valid keys here: density, poisson_ratio, radius");
