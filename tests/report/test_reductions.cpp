@@ -97,6 +97,24 @@ TEST(Reductions, AKeyResolvedOnlyWhereItActsGetsItsMeaningElsewhere) {
   EXPECT_TRUE(leaf(b.points[0], "/feeder_spin").is_null());
 }
 
+// friction_stiffness_ratio, resolved only where given: a point without it is Mindlin's, and the
+// number sorts before that name on the axis.
+TEST(Reductions, StickStiffnessAbsentMeansMindlin) {
+  Analysis a;
+  a.settings = default_analysis_settings();
+  RunData mindlin = made_up_run(0.75, 1, 0.4), stiff = made_up_run(0.75, 1, 0.2);
+  json config = stiff.config;
+  config["friction_stiffness_ratio"] = 3.2;
+  set_run_config(stiff, config);
+  a.runs = {mindlin, stiff};
+  for (auto& r : a.runs) summarize_run(r, a.settings);
+  group(a, std::nullopt);
+  ASSERT_EQ(a.points.size(), 2u);
+  EXPECT_EQ(a.axes, std::vector<std::string>{"/friction_stiffness_ratio"});
+  EXPECT_EQ(leaf(a.points[0], "/friction_stiffness_ratio"), json(3.2));
+  EXPECT_EQ(leaf(a.points[1], "/friction_stiffness_ratio"), json("mindlin"));
+}
+
 // D is the maximum of D(l) over the D window and D_avg its mean; U_b_hat, K, N are the last rows;
 // no Purohit prediction without the radii.
 TEST(Reductions, SummarizesOneRun) {
