@@ -35,7 +35,11 @@ void ThreadGovernor::record(double seconds_per_step) {
   ++probes_;
   probing_ = false;
   since_probe_ = 0;
-  if (seconds_per_step < kMargin * last_at_choice_) {
+  // Up to all threads when they take < kMargin of one's time; back to one when the threads
+  // take more than kKeep of its time (per step, the probe against the choice's last window).
+  const bool better = window_threads_ > 1 ? seconds_per_step < kMargin * last_at_choice_
+                                          : kKeep * seconds_per_step <= last_at_choice_;
+  if (better) {
     choice_ = window_threads_;
     wait_ = kAfterSwitch;
     last_at_choice_ = seconds_per_step;

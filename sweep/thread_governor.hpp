@@ -8,8 +8,12 @@
 // the other choice
 // (1 thread, or all allowed); it keeps the faster and probes again after an interval that
 // doubles while the choice holds. A probe is cut short once it has taken as long as a whole
-// window at the choice (it has lost), so a probe costs at most about one window. The result of
-// a run does not depend on its thread count (bitwise), so this changes only its wall time.
+// window at the choice (it has lost), so a probe costs at most about one window. More threads
+// must earn their cores: they are taken when 10 % faster than one and given back once they are
+// no longer 5 % faster (the band between is the hysteresis against timing noise; on an idle
+// 2-core VM a symmetric 10 % band kept 2 threads all through a long run where they gained
+// nothing measurable). The result of a run does not depend on its thread count (bitwise), so
+// this changes only its wall time and CPU time.
 #include <cstdint>
 
 namespace wirepack::sweep {
@@ -20,14 +24,16 @@ class ThreadGovernor {
   static constexpr int kFirstProbe = 1;     // windows at all allowed threads before the first probe
   static constexpr int kAfterSwitch = 4;    // windows before the probe after a switch
   static constexpr int kLongestWait = 512;  // the probe interval stops doubling here [windows]
-  static constexpr double kMargin = 0.9;    // the other choice must take < 90 % of the time
+  static constexpr double kMargin = 0.9;    // more threads are taken when < 90 % of 1's time
+  static constexpr double kKeep = 0.95;     // and kept while < 95 % of it (else given back)
 
   // Threads for the next window, given how many are allowed now (>= 1).
   int next(int allowed);
   // The wall time of the window just run, per step [s].
   void record(double seconds_per_step);
-  // Whether the probe being run has already lost: `elapsed_s` of its steps exceed a whole
-  // window's time at the choice. The caller then ends the window (and records it) at once.
+  // Whether the probe being run is to be cut short: `elapsed_s` of its steps exceed a whole
+  // window's time at the choice. The caller then ends the window (and records its time per
+  // step so far) at once.
   bool lost(double elapsed_s) const {
     return probing_ && elapsed_s > kWindowSteps * last_at_choice_;
   }
