@@ -285,11 +285,15 @@ int cmd_render(const wirepack::app::RenderOptions& o) {
 int cmd_export(const std::string& run_file, const std::string& csv, const std::string& xmf,
                const std::string& profile, long snapshot) {
   try {
+    // Refused before anything is written: a checkpoint has no datasets for the XDMF to reference.
+    if (!xmf.empty() && run_file.size() >= 5 && run_file.substr(run_file.size() - 5) == ".ckpt")
+      export_xdmf(run_file, xmf);  // throws, naming the file and what to do instead
     if (!csv.empty()) export_csv(run_file, csv);
     if (!xmf.empty()) export_xdmf(run_file, xmf);
     if (!profile.empty()) {
       // Default: the last snapshot (counted from the end when negative).
-      if (snapshot < 0) snapshot += static_cast<long>(read_run_file(run_file).snapshots.size());
+      if (snapshot < 0)
+        snapshot += static_cast<long>(read_run_for_export(run_file).snapshots.size());
       export_profile(run_file, snapshot, profile);
     }
   } catch (const RunFileError& e) {
@@ -448,7 +452,10 @@ int main(int argc, char** argv) {
   auto* exp = app.add_subcommand("export",
                                  "convert a run file: series to CSV, snapshots to "
                                  "an XDMF sidecar for ParaView");
-  exp->add_option("run_file", run_file, "run file (HDF5)")->required();
+  exp->add_option("run_file", run_file,
+                  "run file (HDF5), or the checkpoint RUN.h5.ckpt of a run part-way (--csv and "
+                  "--profile: what it has recorded so far)")
+      ->required();
   auto* outputs = exp->add_option_group("outputs", "at least one of");
   outputs->add_option("--csv", csv_path, "write the series as CSV");
   outputs->add_option("--xdmf", xmf_path, "write an XDMF file referencing the run file");

@@ -5,8 +5,10 @@
 #include <fstream>
 #include <sstream>
 
+#include "engine/state_archive.hpp"
 #include "sweep/atomic_file.hpp"
 #include "sweep/format.hpp"
+#include "sweep/run_checkpoint.hpp"
 #include "sweep/run_file.hpp"
 
 namespace wirepack::sweep {
@@ -52,23 +54,32 @@ constexpr const char* kFloat32 = "NumberType=\"Float\" Precision=\"4\"";
 constexpr const char* kInt32 = "NumberType=\"Int\" Precision=\"4\"";
 constexpr const char* kUInt8 = "NumberType=\"UChar\" Precision=\"1\"";
 
-// Reads a run file to export; a `.part` (a run killed or still being written) is refused even
-// when it happens to be readable: only a renamed file is known to be whole.
-RunRecord read_for_export(const std::string& run_file) {
-  const std::string part = ".part";
-  if (run_file.size() >= part.size() &&
-      run_file.compare(run_file.size() - part.size(), part.size(), part) == 0)
-    throw RunFileError(run_file +
-                       ": a partial run file (its run was killed or is still being written); "
-                       "export the finished " +
-                       run_file.substr(0, run_file.size() - part.size()));
-  return read_run_file(run_file);
+bool ends_with(const std::string& s, const std::string& tail) {
+  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
 }
 
 }  // namespace
 
+RunRecord read_run_for_export(const std::string& run_file) {
+  const std::string part = ".part";
+  if (ends_with(run_file, part))
+    throw RunFileError(run_file +
+                       ": a partial run file (its run was killed or is still being written); "
+                       "export the finished " +
+                       run_file.substr(0, run_file.size() - part.size()) +
+                       ", or its checkpoint (.h5.ckpt) while the run is part-way");
+  if (ends_with(run_file, ".ckpt")) {
+    try {
+      return read_checkpoint_record(run_file);
+    } catch (const CheckpointError& e) {
+      throw RunFileError(e.what());
+    }
+  }
+  return read_run_file(run_file);
+}
+
 void export_csv(const std::string& run_file, const std::string& csv_path) {
-  const RunRecord r = read_for_export(run_file);
+  const RunRecord r = read_run_for_export(run_file);
   std::ostringstream out;
   std::size_t rows = 0;
   for (std::size_t c = 0; c < r.series.size(); ++c) {
@@ -87,7 +98,12 @@ void export_csv(const std::string& run_file, const std::string& csv_path) {
 }
 
 void export_xdmf(const std::string& run_file, const std::string& xmf_path) {
-  const RunRecord r = read_for_export(run_file);
+  if (ends_with(run_file, ".ckpt"))
+    throw RunFileError(run_file +
+                       ": a checkpoint has no HDF5 datasets for an XDMF file to reference; "
+                       "export its series (--csv) or a snapshot (--profile) now, the XDMF "
+                       "from the run file once the run has finished");
+  const RunRecord r = read_run_for_export(run_file);
   const std::string h5 = xml_escape(relative_run_path(run_file, xmf_path));
   // An attribute of `rows` values (times `cols` components) stored at <snap>/<name>, named
   // after the dataset, on the grid's nodes or cells.

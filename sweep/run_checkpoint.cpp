@@ -1,5 +1,6 @@
 #include "sweep/run_checkpoint.hpp"
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -98,6 +99,39 @@ RunCheckpoint read_checkpoint(const std::string& path) {
     throw fail(e.what());
   }
   return c;
+}
+
+namespace {
+
+// The checkpoint keeps the config in canonical form (sweep_config.hpp: every number a double);
+// integral values are made integers again so that the scene parses as the run file's config
+// (whose integer keys, e.g. /seed, refuse a double).
+nlohmann::json integers_restored(const nlohmann::json& v) {
+  if (v.is_number_float()) {
+    const double x = v.get<double>();
+    if (std::isfinite(x) && x == std::trunc(x) && std::fabs(x) < 9007199254740992.0)
+      return static_cast<std::int64_t>(x);
+    return v;
+  }
+  nlohmann::json out = v;
+  if (v.is_object() || v.is_array()) {
+    for (auto it = out.begin(); it != out.end(); ++it) *it = integers_restored(*it);
+  }
+  return out;
+}
+
+}  // namespace
+
+RunRecord read_checkpoint_record(const std::string& path) {
+  RunCheckpoint c = read_checkpoint(path);
+  RunRecord r = std::move(c.record);
+  r.status = RunStatus::Running;
+  try {
+    r.config = integers_restored(nlohmann::json::parse(c.config));
+  } catch (const nlohmann::json::exception& e) {
+    throw CheckpointError(path + ": its configuration is not JSON (" + e.what() + ")");
+  }
+  return r;
 }
 
 }  // namespace wirepack::sweep

@@ -34,5 +34,8 @@ void write_checkpoint(const RunCheckpoint& c, const std::string& path);
 // Reads a checkpoint; throws CheckpointError (engine/state_archive.hpp) naming the file and what
 // is wrong: unreadable, not a checkpoint, another format, damaged (checksum), truncated.
 RunCheckpoint read_checkpoint(const std::string& path);
+// What a checkpoint has recorded so far, as the record of a run still going (status running,
+// its config parsed), for `wirepack export` of a run part-way. Throws as read_checkpoint.
+RunRecord read_checkpoint_record(const std::string& path);
 
 }  // namespace wirepack::sweep

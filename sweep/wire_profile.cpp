@@ -7,6 +7,7 @@
 
 #include "engine/contact/triangle_distance.hpp"
 #include "sweep/atomic_file.hpp"
+#include "sweep/export.hpp"
 #include "sweep/format.hpp"
 #include "sweep/run_file.hpp"
 #include "sweep/scene_config.hpp"
@@ -66,7 +67,7 @@ OrderVariants order_variants(analysis::Centerline x, const SceneParams& p,
 }
 
 void export_profile(const std::string& run_file, long snapshot, const std::string& csv_path) {
-  const RunRecord rec = read_run_file(run_file);
+  const RunRecord rec = read_run_for_export(run_file);
   if (snapshot < 0 || snapshot >= static_cast<long>(rec.snapshots.size()))
     throw RunFileError(run_file + ": no snapshot " + std::to_string(snapshot) + " (it has " +
                        std::to_string(rec.snapshots.size()) + ", numbered from 0)");

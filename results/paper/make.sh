@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # The paper reproduction campaign (results/paper/README.md). From anywhere, after scripts/setup.sh:
 #   bash results/paper/make.sh status              runs done and left per figure (partial: runs
-#                                                  with a checkpoint to resume from; the CPU hours
-#                                                  left at the median of its complete runs); runs
-#                                                  nothing
+#                                                  with a checkpoint to resume from, and the l each
+#                                                  has reached; the CPU hours left at the median
+#                                                  of its complete runs); runs nothing
 #   bash results/paper/make.sh run FIG[,FIG...] [THREADS]
 #                                                  runs or resumes the sweeps of the figures given
 #                                                  (fig5b, fig5a, fig4, fig1_3) in stages: every
@@ -63,6 +63,22 @@ status() {
   done
   echo "all: $total_done of $total runs done; results/paper holds $(du -sh "$here" | cut -f1)" \
     "(budget 150 MB)"
+  # How far each partial run is: the last l its checkpoint has recorded (wirepack export of a
+  # checkpoint writes the series so far).
+  local csv
+  csv=$(mktemp)
+  for f in "${figs[@]}"; do
+    for ckpt in "$here/$f/sweep/runs/"*.h5.ckpt; do
+      [ -f "$ckpt" ] || continue
+      if "$wp" export "$ckpt" --csv "$csv" > /dev/null 2>&1; then
+        echo "partial: $f/sweep/runs/$(basename "$ckpt" .ckpt) at l = $(tail -n 1 "$csv" |
+          cut -d, -f1 | awk '{ printf "%.1f", $1 }')"
+      else
+        echo "partial: $f/sweep/runs/$(basename "$ckpt") cannot be read (the run restarts at l = 0)"
+      fi
+    done
+  done
+  rm -f "$csv"
 }
 
 run_stage() {  # FIG STAGE THREADS: FIG's sweep with seeds 1-STAGE

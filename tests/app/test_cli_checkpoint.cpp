@@ -8,9 +8,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstring>
 #include <filesystem>
+#include <sstream>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -179,6 +182,36 @@ TEST(CliCheckpoint, SigtermStopsARunWithItsCheckpoint) {
   EXPECT_TRUE(fs::exists(dir / "run.h5.ckpt"));
   EXPECT_FALSE(fs::exists(dir / "run.h5"));
   EXPECT_FALSE(fs::exists(dir / "run.h5.part"));
+
+  // The run part-way, from its checkpoint: the series so far are the first rows of the
+  // finished run's (every column but the wall time), and its last snapshot has a profile.
+  const auto part =
+      run_wirepack(dir, "export run.h5.ckpt --csv part.csv --profile part_profile.csv");
+  ASSERT_EQ(part.code, 0) << part.err;
+  ASSERT_EQ(run_wirepack(dir, "export ref.h5 --csv ref.csv").code, 0);
+  const auto rows = [](const std::string& text) {
+    std::vector<std::vector<std::string>> out;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) {
+      out.emplace_back();
+      std::istringstream cs(line);
+      for (std::string cell; std::getline(cs, cell, ',');) out.back().push_back(cell);
+    }
+    return out;
+  };
+  const auto so_far = rows(read_text(dir / "part.csv"));
+  const auto whole = rows(read_text(dir / "ref.csv"));
+  ASSERT_GT(so_far.size(), 2u);  // the header and more than the row at l = 0
+  ASSERT_LT(so_far.size(), whole.size());
+  const auto wall = std::find(whole[0].begin(), whole[0].end(), "wall_s") - whole[0].begin();
+  for (std::size_t i = 0; i < so_far.size(); ++i) {
+    ASSERT_EQ(so_far[i].size(), whole[i].size()) << "row " << i;
+    for (std::size_t c = 0; c < whole[i].size(); ++c) {
+      if (i > 0 && static_cast<long>(c) == wall) continue;
+      EXPECT_EQ(so_far[i][c], whole[i][c]) << "row " << i << ", column " << whole[0][c];
+    }
+  }
+  EXPECT_NE(read_text(dir / "part_profile.csv").find("from_hole,s_R,kappa_R"), std::string::npos);
 
   const auto last = run_wirepack(dir, "run s.json --out run.h5");
   ASSERT_EQ(last.code, 0) << last.err;

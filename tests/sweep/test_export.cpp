@@ -2,14 +2,18 @@
 #include "sweep/export.hpp"
 
 #include <filesystem>
+#include <fstream>
+#include <functional>
 #include <regex>
 #include <sstream>
 
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
+#include "sweep/run_checkpoint.hpp"
 #include "sweep/run_file.hpp"
 #include "sweep/run_file_fixture.hpp"
+#include "sweep/sweep_config.hpp"
 #include "sweep/temp_dir.hpp"
 
 namespace wirepack::sweep {
@@ -191,6 +195,46 @@ TEST(Export, XdmfFieldAttributes) {
   // Per snapshot: wire, curvature, shell triangles and vertices; 4 fields in snapshots 1, 2.
   EXPECT_EQ(check_hdf_items(dir / "run.xmf"), 12u + 8u);
   EXPECT_EQ(count(x, "<Attribute "), count(x, "</Attribute>"));
+}
+
+// A run part-way: its checkpoint exports the series recorded so far, with the run file's
+// columns; its config parses with integer keys intact; XDMF (which references the run file's
+// datasets) and a damaged checkpoint are refused with the file and the reason, writing nothing.
+TEST(Export, CheckpointOfARunPartWay) {
+  TempDir dir;
+  RunCheckpoint c;
+  c.config = canonical_json(nlohmann::json{{"rho", 20}, {"seed", 3}, {"mu_s", 0.5}});
+  c.record = record(false);
+  c.engine = "state";
+  write_checkpoint(c, dir / "run.h5.ckpt");
+  export_csv(dir / "run.h5.ckpt", dir / "run.csv");
+  EXPECT_EQ(read_text(dir / "run.csv"), "l,K,N\n0,0,0\n0.1,1.5,1\n0.2,nan,2\n");
+  const RunRecord r = read_run_for_export(dir / "run.h5.ckpt");
+  EXPECT_EQ(r.status, RunStatus::Running);
+  EXPECT_TRUE(r.config.at("seed").is_number_integer());
+  EXPECT_EQ(r.config.at("seed"), 3);
+  EXPECT_EQ(r.config.at("mu_s"), 0.5);
+  EXPECT_EQ(r.snapshots.size(), 3u);
+
+  const auto message = [](const std::function<void()>& f) -> std::string {
+    try {
+      f();
+    } catch (const RunFileError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  const std::string xdmf = message([&] { export_xdmf(dir / "run.h5.ckpt", dir / "run.xmf"); });
+  EXPECT_NE(xdmf.find("run.h5.ckpt: a checkpoint has no HDF5 datasets"), std::string::npos) << xdmf;
+  EXPECT_FALSE(fs::exists(dir / "run.xmf"));
+  std::string bytes = read_text(dir / "run.h5.ckpt");
+  bytes[bytes.size() / 2] ^= 0x20;
+  std::ofstream(dir / "bad.h5.ckpt", std::ios::binary) << bytes;
+  const std::string bad = message([&] { export_csv(dir / "bad.h5.ckpt", dir / "bad.csv"); });
+  EXPECT_NE(bad.find("bad.h5.ckpt: damaged"), std::string::npos) << bad;
+  EXPECT_FALSE(fs::exists(dir / "bad.csv"));
+  const std::string part = message([&] { export_csv(dir / "run.h5.part", dir / "p.csv"); });
+  EXPECT_NE(part.find("a partial run file"), std::string::npos) << part;
 }
 
 TEST(Export, MissingRunFileThrows) {
