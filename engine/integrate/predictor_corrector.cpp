@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <limits>
+#include <sstream>
 #include <string>
 
 namespace wirepack {
@@ -100,9 +102,11 @@ double PredictorCorrector::step(RodState& s, const EvaluateFn& eval,
         s.omega = om0_;
         s.shell_x = sx0_;
         s.shell_v = sv0_;
-        throw SimulationError(finite ? "time step collapsed below " + std::to_string(c_.dt_floor) +
-                                           " s"
-                                     : "non-finite forces (NaN/Inf)");
+        if (!finite) throw SimulationError("non-finite forces (NaN/Inf)");
+        std::ostringstream why;  // the floor is ~1e-9 s: std::to_string printed "0.000000"
+        why << std::setprecision(3) << "time step collapsed below " << c_.dt_floor
+            << " s (the error control's last try " << dt_ << " s)";
+        throw SimulationError(why.str());
       }
       // Retry from the start: the predictor rewrites the positions and velocities, the
       // reference frames (updated in place) are restored.

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "engine/integrate/free_rod.hpp"
 
@@ -60,6 +61,25 @@ TEST(PredictorCorrector, DampingDissipatesEnergy) {
   std::printf("  energy after 4e4 damped steps: %.3e of the initial\n", left);
   EXPECT_EQ(increases, 0);
   EXPECT_LT(left, 0.5);
+}
+
+// A step that no tolerance can be met with collapses to the floor and fails with a reason that
+// names the floor in seconds (it read "0.000000 s" at the default floor of ~1e-9 s) and leaves
+// the state where the step started.
+TEST(PredictorCorrector, CollapsedStepSaysItsFloor) {
+  FreeRod rod = lumped_rod(0.0, 4e5);
+  StepControl c = rod.control(0.0);
+  c.tolerance = 1e-30 * rod.mat.r;  // unreachable: every step is rejected
+  c.dt_floor = 1e-9;
+  const Vec3List start = rod.s.x;
+  std::string why;
+  try {
+    rod.run(c, 10);
+  } catch (const SimulationError& e) {
+    why = e.what();
+  }
+  EXPECT_NE(why.find("time step collapsed below 1e-09 s"), std::string::npos) << why;
+  EXPECT_EQ(rod.s.x, start);
 }
 
 }  // namespace
