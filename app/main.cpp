@@ -285,9 +285,7 @@ int cmd_render(const wirepack::app::RenderOptions& o) {
 int cmd_export(const std::string& run_file, const std::string& csv, const std::string& xmf,
                const std::string& profile, long snapshot) {
   try {
-    // Refused before anything is written: a checkpoint has no datasets for the XDMF to reference.
-    if (!xmf.empty() && run_file.size() >= 5 && run_file.substr(run_file.size() - 5) == ".ckpt")
-      export_xdmf(run_file, xmf);  // throws, naming the file and what to do instead
+    if (!xmf.empty()) check_xdmf_source(run_file);  // before anything is written
     if (!csv.empty()) export_csv(run_file, csv);
     if (!xmf.empty()) export_xdmf(run_file, xmf);
     if (!profile.empty()) {

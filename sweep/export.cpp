@@ -97,12 +97,16 @@ void export_csv(const std::string& run_file, const std::string& csv_path) {
   write_file_atomic(csv_path, out.str());
 }
 
-void export_xdmf(const std::string& run_file, const std::string& xmf_path) {
+void check_xdmf_source(const std::string& run_file) {
   if (ends_with(run_file, ".ckpt"))
     throw RunFileError(run_file +
                        ": a checkpoint has no HDF5 datasets for an XDMF file to reference; "
                        "export its series (--csv) or a snapshot (--profile) now, the XDMF "
                        "from the run file once the run has finished");
+}
+
+void export_xdmf(const std::string& run_file, const std::string& xmf_path) {
+  check_xdmf_source(run_file);
   const RunRecord r = read_run_for_export(run_file);
   const std::string h5 = xml_escape(relative_run_path(run_file, xmf_path));
   // An attribute of `rows` values (times `cols` components) stored at <snap>/<name>, named

@@ -28,5 +28,8 @@ void export_csv(const std::string& run_file, const std::string& csv_path);
 // relative to the .xmf file; a mesh shared by all snapshots (run file layout 2) is referenced once,
 // at /shell_triangles.
 void export_xdmf(const std::string& run_file, const std::string& xmf_path);
+// Throws RunFileError where `run_file` cannot back an XDMF file (a checkpoint), so that a caller
+// writing several outputs can refuse before writing any.
+void check_xdmf_source(const std::string& run_file);
 
 }  // namespace wirepack::sweep

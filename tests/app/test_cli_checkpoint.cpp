@@ -212,6 +212,12 @@ TEST(CliCheckpoint, SigtermStopsARunWithItsCheckpoint) {
     }
   }
   EXPECT_NE(read_text(dir / "part_profile.csv").find("from_hole,s_R,kappa_R"), std::string::npos);
+  // XDMF needs the run file's datasets: refused, exit 2, and the CSV asked beside it not written.
+  const auto xdmf = run_wirepack(dir, "export run.h5.ckpt --csv x.csv --xdmf x.xmf");
+  EXPECT_EQ(xdmf.code, 2);
+  EXPECT_NE(xdmf.err.find("a checkpoint has no HDF5 datasets"), std::string::npos) << xdmf.err;
+  EXPECT_FALSE(fs::exists(dir / "x.csv"));
+  EXPECT_FALSE(fs::exists(dir / "x.xmf"));
 
   const auto last = run_wirepack(dir, "run s.json --out run.h5");
   ASSERT_EQ(last.code, 0) << last.err;
