@@ -54,21 +54,17 @@ constexpr const char* kFloat32 = "NumberType=\"Float\" Precision=\"4\"";
 constexpr const char* kInt32 = "NumberType=\"Int\" Precision=\"4\"";
 constexpr const char* kUInt8 = "NumberType=\"UChar\" Precision=\"1\"";
 
-bool ends_with(const std::string& s, const std::string& tail) {
-  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
-}
-
 }  // namespace
 
 RunRecord read_run_for_export(const std::string& run_file) {
   const std::string part = ".part";
-  if (ends_with(run_file, part))
+  if (run_file.ends_with(part))
     throw RunFileError(run_file +
                        ": a partial run file (its run was killed or is still being written); "
                        "export the finished " +
                        run_file.substr(0, run_file.size() - part.size()) +
                        ", or its checkpoint (.h5.ckpt) while the run is part-way");
-  if (ends_with(run_file, ".ckpt")) {
+  if (run_file.ends_with(".ckpt")) {
     try {
       return read_checkpoint_record(run_file);
     } catch (const CheckpointError& e) {
@@ -98,7 +94,7 @@ void export_csv(const std::string& run_file, const std::string& csv_path) {
 }
 
 void check_xdmf_source(const std::string& run_file) {
-  if (ends_with(run_file, ".ckpt"))
+  if (run_file.ends_with(".ckpt"))
     throw RunFileError(run_file +
                        ": a checkpoint has no HDF5 datasets for an XDMF file to reference; "
                        "export its series (--csv) or a snapshot (--profile) now, the XDMF "
