@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# Reproduces results/critical/: the critical friction mu_c of the coiling-to-crumpling transition
-# at rho = 20, xi = 10, eps = 1e3 (elastic shell, "fast" preset, l = 20, D = max of D(l) over
-# [5, 20]) with its 95 % bootstrap interval, from a coarse grid (6 mu_s x 4 seeds) refined by
+# Reproduces results/critical/: the sharp feature of D(mu_s) at rho = 20, xi = 10, eps = 1e3
+# (elastic shell, "fast" preset, l = 20, D = max of D(l) over [5, 20]; at the quasi-static
+# numerics every run still coils by l = 20, see the README) with its 95 % bootstrap interval, from a coarse grid (6 mu_s x 4 seeds) refined by
 # `wirepack refine` (3 rounds of 2 values x 4 seeds), against a uniform grid of 11 mu_s x 4 seeds
 # (its 8 values shared with the refined sweep reuse those run files), and the refined sweep fitted
 # on mu_s <= 0.6 only.
