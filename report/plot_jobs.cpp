@@ -149,7 +149,7 @@ std::optional<PlotJob> view_plot(const Analysis& a, const View& v,
     if (std::isfinite(f.x_c_lo) && std::isfinite(f.x_c_hi)) panel.bands = {{f.x_c_lo, f.x_c_hi}};
     // The inset: the order parameter and the fit about x_c, x_c's interval shaded.
     plots::Panel inset;
-    inset.title = "about " + v.name + "_c (" + f.model + " model)";
+    inset.title = "about " + v.name + "_c (" + f.model + ")";  // a longer one ran off the page
     inset.key = "off";
     inset.logx = panel.logx;
     inset.curves = {panel.curves[0], fit};

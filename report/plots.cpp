@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -67,6 +68,15 @@ std::string style_text(Curve::Style s) {
 
 }  // namespace
 
+double tick_step(double lo, double hi, int max_intervals) {
+  const double raw = (hi - lo) / std::max(1, max_intervals);
+  if (!(raw > 0) || !std::isfinite(raw)) return 0;
+  const double decade = std::pow(10.0, std::floor(std::log10(raw)));
+  for (const double m : {1.0, 2.0, 5.0})
+    if (m * decade >= raw * (1 - 1e-12)) return m * decade;
+  return 10 * decade;
+}
+
 std::string script(const std::string& comment, const std::string& page_title,
                    const std::vector<Panel>& panels, int rows, int cols,
                    const std::string& png_name, int width, int height) {
@@ -118,9 +128,15 @@ std::string script(const std::string& comment, const std::string& page_title,
           << ", screen " << format_number(q[1] + q[3])
           << " behind fillcolor rgb \"white\" fillstyle solid 1.0 noborder\n";
     }
-    if (panel.xrange)
-      s << "set xrange [" << format_number((*panel.xrange)[0]) << ":"
-        << format_number((*panel.xrange)[1]) << "]\n";
+    if (panel.xrange) {
+      const auto [x0, x1] = *panel.xrange;
+      s << "set xrange [" << format_number(x0) << ":" << format_number(x1) << "]\n";
+      // A narrow panel (an inset) over a short range: gnuplot's own ticks overlap their labels.
+      if (!panel.logx) {
+        const double step = tick_step(x0, x1, kMaxRangeTickIntervals);
+        if (step > 0) s << "set xtics " << format_number(step) << '\n';
+      }
+    }
     for (std::size_t b = 0; b < panel.bands.size(); ++b)
       s << "set object " << ++objects << " rect from " << format_number(panel.bands[b][0])
         << ", graph 0 to " << format_number(panel.bands[b][1])

@@ -39,6 +39,14 @@ struct Panel {
   std::vector<std::array<double, 2>> bands;     // shaded x intervals [lo, hi] behind the data
 };
 
+// Tick intervals at most on a panel's fixed linear x range (`Panel::xrange`): an inset a third of
+// the page wide has room for about four labels.
+constexpr int kMaxRangeTickIntervals = 3;
+
+// The tick spacing 1, 2 or 5 x 10^k, the smallest that cuts [lo, hi] into at most
+// `max_intervals` intervals; 0 when the range is empty or not finite.
+double tick_step(double lo, double hi, int max_intervals);
+
 // A script drawing `panels` in a rows x cols layout under `page_title` (one panel: no multiplot,
 // the page title heads the panel's) into the PNG named by the gnuplot variable `out`, default
 // `png_name`; `comment` heads the script (lines prefixed with "# "). A panel without any finite

@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "report/analyze.hpp"
+#include "report/plots.hpp"
 #include "sweep/atomic_file.hpp"
 #include "sweep/json_file.hpp"
 #include "sweep/run.hpp"
@@ -148,7 +149,7 @@ TEST(ViewPlot, TransitionGetsItsFitAndAnInsetAboutXc) {
   EXPECT_NE(gp.find("set origin 0.66, 0.3"), std::string::npos) << gp;
   EXPECT_NE(gp.find("rect from screen 0.66, screen 0.3 to screen 1, screen 0.75"),
             std::string::npos);  // the inset's opaque background
-  EXPECT_NE(gp.find("set title \"about mu_s_c (continuous model)\""), std::string::npos);
+  EXPECT_NE(gp.find("set title \"about mu_s_c (continuous)\""), std::string::npos);
   const auto range_at = gp.find("set xrange [");
   ASSERT_NE(range_at, std::string::npos);
   const double r_lo = number_after(gp.substr(range_at), "set xrange [");
@@ -158,6 +159,12 @@ TEST(ViewPlot, TransitionGetsItsFitAndAnInsetAboutXc) {
   EXPECT_GE(r_lo, 0.0);
   EXPECT_LE(r_hi, 0.6);
   EXPECT_LT(r_hi - r_lo, 0.6) << "the inset magnifies nothing";
+  // Its ticks: at most three intervals over its range (gnuplot's own crowded a narrow inset).
+  const auto tics_at = gp.find("set xtics ", range_at);
+  ASSERT_NE(tics_at, std::string::npos) << gp;
+  const double step = number_after(gp.substr(tics_at), "set xtics ");
+  EXPECT_GT(step, 0.0);
+  EXPECT_LE((r_hi - r_lo) / step, 3.0 + 1e-9);
 
   // gnuplot accepts the script (where it is installed).
   o.gnuplot = "gnuplot";
@@ -197,6 +204,24 @@ TEST(ViewPlot, InsetBesideThePanelWhenTheCurveComesBackDown) {
   const std::string gp = read_text(dir / "analysis/plots/D_vs_mu_s.gp");
   ASSERT_NE(gp.find("set multiplot"), std::string::npos) << "no transition fitted:\n" << gp;
   EXPECT_NE(gp.find("set origin 0.66, 0.3"), std::string::npos) << gp;
+}
+
+// Tick spacings 1, 2, 5 x 10^k, the smallest giving at most N intervals: the refined critical
+// study's inset ([0.6878, 0.7122], 11 labels 0.002 apart from gnuplot, which overlapped) gets
+// 0.01; Fig. 5b's ([0.2, 0.4]) 0.1.
+TEST(ViewPlot, TickStepLeavesAtMostTheIntervalsAsked) {
+  EXPECT_DOUBLE_EQ(plots::tick_step(0.6878, 0.7122, 3), 0.01);
+  EXPECT_DOUBLE_EQ(plots::tick_step(0.2, 0.4, 3), 0.1);
+  EXPECT_DOUBLE_EQ(plots::tick_step(0.2, 0.4, 4), 0.05);
+  EXPECT_DOUBLE_EQ(plots::tick_step(0, 1, 5), 0.2);  // exactly 5 intervals of 0.2
+  EXPECT_DOUBLE_EQ(plots::tick_step(0, 30, 3), 10.0);
+  EXPECT_DOUBLE_EQ(plots::tick_step(1, 1, 3), 0.0);  // empty range: gnuplot decides
+  EXPECT_DOUBLE_EQ(plots::tick_step(0, NAN, 3), 0.0);
+  for (double w : {1e-4, 3.7e-3, 0.02, 0.26, 7.0, 130.0}) {
+    const double s = plots::tick_step(0.5, 0.5 + w, 3);
+    EXPECT_LE(w / s, 3.0 + 1e-9) << w;
+    EXPECT_GT(w / s, 1.2) << w;  // not coarser than needed: the next smaller step gives > 3
+  }
 }
 
 TEST(ViewPlot, LiteralDAloneWithoutTheOrderParameterOrAFit) {
