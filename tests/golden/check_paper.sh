@@ -34,7 +34,13 @@ for dir in "$paper"/*/; do
   fig=$(basename "$dir")
   compgen -G "$dir/sweep/runs/*.h5" >/dev/null || continue
   [ -d "$dir/analysis" ] || continue
-  cp -r "$dir/sweep" "$tmp/$fig"
+  # What the analysis reads: the manifest, the joblog and the finished run files (each renamed
+  # into place whole). Not the checkpoints and temporary files of runs going on beside the test:
+  # they are rewritten and renamed every 2 min, and copying the whole folder then failed.
+  mkdir -p "$tmp/$fig/runs"
+  cp "$dir/sweep/manifest.json" "$tmp/$fig/"
+  [ ! -f "$dir/sweep/joblog.csv" ] || cp "$dir/sweep/joblog.csv" "$tmp/$fig/"
+  cp "$dir"/sweep/runs/*.h5 "$tmp/$fig/runs/"
   run "$tmp/$fig.log" "$wirepack" analyze "$tmp/$fig" --out "$tmp/$fig.out" --no-plots
   same "$dir/analysis" "$tmp/$fig.out" "$fig" "bash results/paper/make.sh analyze $fig"
   # A figure's tables along l (fig4/along_l.sh), remade the same way.
