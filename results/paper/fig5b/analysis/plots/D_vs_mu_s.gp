@@ -473,13 +473,14 @@ plot $d0_0 using 1:2:3 with yerrorlines pointtype 7 pointsize 0.8 title "D_chord
 reset
 set grid
 set key off
-set title "about mu_s_c (smooth model)"
+set title "about mu_s_c (smooth)"
 set xlabel ""
 set ylabel ""
 set origin 0.66, 0.3
 set size 0.33999999999999997, 0.45
 set object 1 rect from screen 0.66, screen 0.3 to screen 1, screen 0.75 behind fillcolor rgb "white" fillstyle solid 1.0 noborder
 set xrange [0.2:0.4]
+set xtics 0.1
 set object 2 rect from 0.25091159382112005, graph 0 to 0.2900065334897744, graph 1 behind fillcolor rgb "#e4e4e4" fillstyle solid 1.0 noborder
 set arrow from 0.2520936202169454, graph 0 to 0.2520936202169454, graph 1 nohead dashtype 2 linecolor rgb "#505050"
 plot $d1_0 using 1:2:3 with yerrorlines pointtype 7 pointsize 0.8 title "D_chord", \
