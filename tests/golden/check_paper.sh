@@ -36,7 +36,8 @@ for dir in "$paper"/*/; do
   [ -d "$dir/analysis" ] || continue
   # What the analysis reads: the manifest, the joblog and the finished run files (each renamed
   # into place whole). Not the checkpoints and temporary files of runs going on beside the test:
-  # they are rewritten and renamed every 2 min, and copying the whole folder then failed.
+  # they are rewritten and renamed every 2 min, and a copy of the whole folder can meet one
+  # half-renamed.
   mkdir -p "$tmp/$fig/runs"
   cp "$dir/sweep/manifest.json" "$tmp/$fig/"
   [ ! -f "$dir/sweep/joblog.csv" ] || cp "$dir/sweep/joblog.csv" "$tmp/$fig/"
