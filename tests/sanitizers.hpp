@@ -1,7 +1,7 @@
 #pragma once
 // Whether this test binary runs under AddressSanitizer (scripts/test_sanitize.sh builds with
 // address,undefined; GCC defines __SANITIZE_ADDRESS__, Clang answers __has_feature). There a
-// step costs 20-45 times what it costs in Release, and the scenes that take over 8 s in Release
+// step costs 20-50 times what it costs in Release, and the scenes that take over 8 s in Release
 // run a shorter version of themselves: the sanitizers look for memory errors and undefined
 // behaviour on the same code paths; the physics at full length is the Release suite's.
 namespace wirepack::testing {
