@@ -151,6 +151,26 @@ TEST(ParallelAssembly, BendingIsBitwiseTheSameOnAnyThreadCount) {
   }
 }
 
+// Steps `one` on 1 thread and `two` on 2 in lockstep to the end: every step's time, and at the
+// end the step count, energies, contact count, wire nodes and shell vertices bitwise equal.
+void expect_the_same_on_one_and_two_threads(Simulation& one, Simulation& two) {
+  one.set_threads(1);
+  two.set_threads(2);
+  while (!one.finished()) {
+    one.step();
+    two.step();
+    ASSERT_EQ(one.time(), two.time()) << "step " << one.steps();
+  }
+  ASSERT_EQ(one.steps(), two.steps());
+  EXPECT_EQ(one.wire_contacts(), two.wire_contacts());
+  const Energies a = one.energies(), b = two.energies();
+  EXPECT_EQ(std::memcmp(&a, &b, sizeof a), 0);
+  const auto xa = one.all_nodes(), xb = two.all_nodes();
+  EXPECT_TRUE(bitwise_equal(Vec3List(xa.begin(), xa.end()), Vec3List(xb.begin(), xb.end())));
+  const auto sa = one.shell_vertices(), sb = two.shell_vertices();
+  EXPECT_TRUE(bitwise_equal(Vec3List(sa.begin(), sa.end()), Vec3List(sb.begin(), sb.end())));
+}
+
 // A whole elastic run with friction and twist, shell contact and self-contact on (rho = 10,
 // coarse elements, to l = 2: the wire touches the shell from l ~ 1.3): every state bitwise the
 // same on 1 and 2 threads.
@@ -160,20 +180,7 @@ TEST(ParallelAssembly, ElasticRunIsBitwiseTheSameOnOneAndTwoThreads) {
   p.numerics.shell_mesh_size = 2 * p.wire.radius;
   p.numerics.shell_self_contact = EffectMode::On;
   Simulation one(p), two(p);
-  one.set_threads(1);
-  two.set_threads(2);
-  while (!one.finished()) {
-    one.step();
-    two.step();
-    ASSERT_EQ(one.time(), two.time()) << "step " << one.steps();
-  }
-  ASSERT_EQ(one.steps(), two.steps());
-  const Energies a = one.energies(), b = two.energies();
-  EXPECT_EQ(std::memcmp(&a, &b, sizeof a), 0);
-  const auto xa = one.all_nodes(), xb = two.all_nodes();
-  EXPECT_TRUE(bitwise_equal(Vec3List(xa.begin(), xa.end()), Vec3List(xb.begin(), xb.end())));
-  const auto sa = one.shell_vertices(), sb = two.shell_vertices();
-  EXPECT_TRUE(bitwise_equal(Vec3List(sa.begin(), sa.end()), Vec3List(sb.begin(), sb.end())));
+  expect_the_same_on_one_and_two_threads(one, two);
 }
 
 // The wire's own loops on two threads: the rigid sphere (rho = 10) with wire-wall and wire-wire
@@ -193,20 +200,8 @@ TEST(ParallelAssembly, RigidFrictionRunIsBitwiseTheSameOnOneAndTwoThreads) {
   Simulation one(p), two(p);
   one.advance_to(8.8);
   two.advance_to(8.8);
-  one.set_threads(1);
-  two.set_threads(2);
-  while (!one.finished()) {
-    one.step();
-    two.step();
-    ASSERT_EQ(one.time(), two.time()) << "step " << one.steps();
-  }
-  ASSERT_EQ(one.steps(), two.steps());
+  expect_the_same_on_one_and_two_threads(one, two);
   EXPECT_GT(one.wire_contacts(), 0) << "the wire never touched itself";
-  EXPECT_EQ(one.wire_contacts(), two.wire_contacts());
-  const Energies a = one.energies(), b = two.energies();
-  EXPECT_EQ(std::memcmp(&a, &b, sizeof a), 0);
-  const auto xa = one.all_nodes(), xb = two.all_nodes();
-  EXPECT_TRUE(bitwise_equal(Vec3List(xa.begin(), xa.end()), Vec3List(xb.begin(), xb.end())));
 }
 
 // The threads of this process (Linux: one entry per thread in /proc/self/task).
