@@ -167,7 +167,7 @@ namespace {
 TEST(CliCheckpoint, SigtermStopsARunWithItsCheckpoint) {
   TempDir dir;
   // kScene to l = 14: ~6 s on one idle core, long enough for a progress line (every 2 s);
-  // under the sanitizers l = 7 is (~100 s).
+  // under the sanitizers kScene's own l = 7 takes ~100 s, long enough.
   std::string scene = kScene;
   if (!testing::kUnderSanitizers) scene.replace(scene.find("\"l_max\": 7"), 10, "\"l_max\": 14");
   dir.write("s.json", scene);
