@@ -10,11 +10,10 @@
 namespace wirepack {
 
 SelfContactTerm::SelfContactTerm(const SelfContactParams& p)
-    : p_(p), hertz_(Hertz::from(p.E_star, p.r)) {
+    : FrictionalTerm(p.friction), p_(p), hertz_(Hertz::from(p.E_star, p.r)) {
   // Exclude |a - b| - 1 edges of arc-length gap shorter than pi r (a hairpin of radius r).
   exclude_ = static_cast<int>(std::ceil(1.0 + M_PI * p.r / p.element_length)) - 1;
   exclude_ = std::max(exclude_, 1);
-  if (p.friction.enabled()) friction_ = std::make_unique<FrictionHistory>(p.friction);
 }
 
 void SelfContactTerm::maybe_rebuild(const RodState& s) {

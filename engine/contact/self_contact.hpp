@@ -16,12 +16,12 @@
 // of the distance) drop contacts abruptly where a minimum merges with a joint, which happens
 // at every element boundary of a curved coil, and inclusion-exclusion over the union of
 // capsules collapses a whole line contact into one; both were tried and rejected.
-#include <memory>
 #include <utility>
 #include <vector>
 
 #include "engine/contact/cell_grid.hpp"
 #include "engine/contact/friction.hpp"
+#include "engine/contact/frictional_term.hpp"
 #include "engine/contact/hertz.hpp"
 #include "engine/contact/segment_distance.hpp"
 #include "engine/term.hpp"
@@ -48,7 +48,7 @@ struct WireContact {
   double force = 0;  // normal force [N]
 };
 
-class SelfContactTerm : public Term {
+class SelfContactTerm : public FrictionalTerm {
  public:
   explicit SelfContactTerm(const SelfContactParams& p);
   std::string name() const override { return "self_contact"; }
@@ -66,16 +66,8 @@ class SelfContactTerm : public Term {
     for (const WireContact& c : contacts_) worst = c.delta > worst ? c.delta : worst;
     return worst;
   }
-  void begin_trial(double dt) override {
-    if (friction_) friction_->begin_trial(dt);
-  }
-  void commit() override {
-    if (friction_) friction_->commit();
-  }
-  bool has_friction() const override { return friction_ != nullptr; }
   void save(StateWriter& out) const override;
   void load(StateReader& in) override;
-  const FrictionHistory* friction() const { return friction_.get(); }
   int exclusion() const { return exclude_; }
   long rebuilds() const { return rebuilds_; }
 
@@ -113,7 +105,6 @@ class SelfContactTerm : public Term {
   long rebuilds_ = 0;
   std::vector<WireContact> contacts_;
   double max_stiffness_ = 0;
-  std::unique_ptr<FrictionHistory> friction_;    // null when mu_s = 0 (no history, no torques)
   std::vector<FrictionHistory::Query> queries_;  // scratch of accumulate(): one per contact
   std::vector<Vec3> friction_force_;             // friction on edge a per contact [N]
 };

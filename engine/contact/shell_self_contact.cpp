@@ -22,7 +22,7 @@ bool has_vertex(const std::array<int, 3>& f, int v) {
 }  // namespace
 
 ShellSelfContactTerm::ShellSelfContactTerm(const ShellMesh& mesh, const ShellSelfContactParams& p)
-    : mesh_(mesh), p_(p), t_(2.0 * p.half_thickness) {
+    : FrictionalTerm(p.friction), mesh_(mesh), p_(p), t_(2.0 * p.half_thickness) {
   if (!(p.half_thickness > 0.0) || !(p.E_star > 0.0) || !(p.skin > 0.0) || !(p.vertex_mass > 0.0)) {
     throw std::invalid_argument(
         "ShellSelfContactTerm: half_thickness, E_star, skin and vertex_mass must be > 0");
@@ -71,7 +71,6 @@ ShellSelfContactTerm::ShellSelfContactTerm(const ShellMesh& mesh, const ShellSel
     for (int k = 0; k < 2; ++k) vertex_edges_[mesh.edges[e][k]].push_back(e);
   }
   row_stiffness_.assign(nv, 0.0);
-  if (p.friction.enabled()) friction_ = std::make_unique<FrictionHistory>(p.friction);
 }
 
 std::string ShellSelfContactTerm::failure() const {

@@ -48,12 +48,12 @@
 // candidate, so a step costs the displacement check only.
 #include <array>
 #include <limits>
-#include <memory>
 #include <utility>
 #include <vector>
 
 #include "engine/contact/cell_grid.hpp"
 #include "engine/contact/friction.hpp"
+#include "engine/contact/frictional_term.hpp"
 #include "engine/contact/hertz.hpp"
 #include "engine/shell/shell_term.hpp"
 #include "engine/term.hpp"
@@ -71,7 +71,7 @@ struct ShellSelfContactParams {
                              // (suggested_exclusion: 2 t + the longest rest edge)
 };
 
-class ShellSelfContactTerm : public Term {
+class ShellSelfContactTerm : public FrictionalTerm {
  public:
   // `mesh` must outlive the term. Throws std::invalid_argument for h, E_star, skin or
   // vertex_mass <= 0 or exclusion < t (the rest mesh would then touch itself).
@@ -82,13 +82,6 @@ class ShellSelfContactTerm : public Term {
   double accumulate(const RodState& s, RodForces& out) override;
   double energy(const RodState& s) override { return evaluate(s, nullptr); }
   double omega_max_sq(const RodInertia& inertia) const override;
-  void begin_trial(double dt) override {
-    if (friction_) friction_->begin_trial(dt);
-  }
-  void commit() override {
-    if (friction_) friction_->commit();
-  }
-  bool has_friction() const override { return friction_ != nullptr; }
   void save(StateWriter& out) const override;
   void load(StateReader& in) override;
   // Two pieces of the shell passed through each other (overlap t for vertex-face contacts).
@@ -177,7 +170,6 @@ class ShellSelfContactTerm : public Term {
   std::vector<int> touched_;
   double max_row_stiffness_ = 0;  // [N/m]
   double max_overlap_ratio_ = 0;  // largest overlap / limit D of the last evaluation [-]
-  std::unique_ptr<FrictionHistory> friction_;
 };
 
 }  // namespace wirepack

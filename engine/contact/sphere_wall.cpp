@@ -6,13 +6,12 @@
 namespace wirepack {
 
 SphereWallTerm::SphereWallTerm(const SphereWallParams& p)
-    : p_(p),
+    : FrictionalTerm(p.friction),
+      p_(p),
       wall_(Hertz::from(p.E_star, p.r * p.R / (p.R - p.r))),
       rim_(Hertz::from(p.E_star, p.r)),
       z_rim_(-std::sqrt(p.R * p.R - p.hole_radius * p.hole_radius)),
-      free_radius2_((p.R - p.r) * (p.R - p.r) * (1.0 - 1e-12)) {
-  if (p.friction.enabled()) friction_ = std::make_unique<FrictionHistory>(p.friction);
-}
+      free_radius2_((p.R - p.r) * (p.R - p.r) * (1.0 - 1e-12)) {}
 
 bool SphereWallTerm::overlap(const Vec3& x, double& delta, Vec3& normal, bool& rim) const {
   const double rho_perp2 = x[0] * x[0] + x[1] * x[1];

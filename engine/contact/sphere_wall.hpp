@@ -5,9 +5,9 @@
 // E* = E_w / (1 - nu_w^2) (rigid wall). Around the entrance hole (radius r_h, at the south pole
 // (0,0,-R)) the wall is absent; there the node touches the hole's rim circle instead, treated as
 // an edge (R* = r).
-#include <memory>
 
 #include "engine/contact/friction.hpp"
+#include "engine/contact/frictional_term.hpp"
 #include "engine/contact/hertz.hpp"
 #include "engine/term.hpp"
 
@@ -23,7 +23,7 @@ struct SphereWallParams {
   FrictionParams friction;   // off when mu_s = 0
 };
 
-class SphereWallTerm : public Term {
+class SphereWallTerm : public FrictionalTerm {
  public:
   explicit SphereWallTerm(const SphereWallParams& p);
   std::string name() const override { return "wall"; }
@@ -40,16 +40,8 @@ class SphereWallTerm : public Term {
       if (!t.rim) worst = t.delta > worst ? t.delta : worst;
     return worst;
   }
-  void begin_trial(double dt) override {
-    if (friction_) friction_->begin_trial(dt);
-  }
-  void commit() override {
-    if (friction_) friction_->commit();
-  }
-  bool has_friction() const override { return friction_ != nullptr; }
   void save(StateWriter& out) const override;
   void load(StateReader& in) override;
-  const FrictionHistory* friction() const { return friction_.get(); }
 
  private:
   // Checkpoints: save() and load() in one (engine/state_archive.hpp).
@@ -64,7 +56,6 @@ class SphereWallTerm : public Term {
   double free_radius2_;       // below this |x|^2 a node cannot touch the wall [m^2]
   double max_stiffness_ = 0;  // largest contact stiffness at the last accumulate [N/m]
   int contacts_ = 0;
-  std::unique_ptr<FrictionHistory> friction_;  // null when mu_s = 0 (no history, no torques)
   struct Touch {
     int node;
     double delta;

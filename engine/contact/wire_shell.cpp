@@ -18,7 +18,8 @@ constexpr double kBarrierOnset = 0.5;
 }  // namespace
 
 WireShellTerm::WireShellTerm(const ShellMesh& mesh, const WireShellParams& p)
-    : mesh_(mesh),
+    : FrictionalTerm(p.friction),
+      mesh_(mesh),
       p_(p),
       hertz_(Hertz::from(p.E_star, p.r).with_barrier(p.r + p.half_thickness, kBarrierOnset)) {
   vertex_faces_.resize(mesh.num_vertices());
@@ -31,7 +32,6 @@ WireShellTerm::WireShellTerm(const ShellMesh& mesh, const WireShellParams& p)
     if (mesh.edge_faces[k][1] < 0)
       boundary_vertex_[mesh.edges[k][0]] = boundary_vertex_[mesh.edges[k][1]] = 1;
   }
-  if (p.friction.enabled()) friction_ = std::make_unique<FrictionHistory>(p.friction);
 }
 
 void WireShellTerm::maybe_rebuild(const RodState& s) {

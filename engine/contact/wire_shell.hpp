@@ -17,12 +17,12 @@
 // vertices by barycentric weights (action = reaction).
 #include <array>
 #include <limits>
-#include <memory>
 #include <utility>
 #include <vector>
 
 #include "engine/contact/cell_grid.hpp"
 #include "engine/contact/friction.hpp"
+#include "engine/contact/frictional_term.hpp"
 #include "engine/contact/hertz.hpp"
 #include "engine/contact/segment_distance.hpp"
 #include "engine/contact/triangle_distance.hpp"
@@ -42,7 +42,7 @@ struct WireShellParams {
   FrictionParams friction;  // off when mu_s = 0
 };
 
-class WireShellTerm : public Term {
+class WireShellTerm : public FrictionalTerm {
  public:
   WireShellTerm(const ShellMesh& mesh, const WireShellParams& p);
   std::string name() const override { return "wire_shell"; }
@@ -51,13 +51,6 @@ class WireShellTerm : public Term {
   double accumulate(const RodState& s, RodForces& out) override;
   double energy(const RodState& s) override { return evaluate(s, nullptr); }
   double omega_max_sq(const RodInertia& inertia) const override;
-  void begin_trial(double dt) override {
-    if (friction_) friction_->begin_trial(dt);
-  }
-  void commit() override {
-    if (friction_) friction_->commit();
-  }
-  bool has_friction() const override { return friction_ != nullptr; }
   void save(StateWriter& out) const override;
   void load(StateReader& in) override;
   // The wire's axis reached the shell's mid-surface in a contact (overlap r + t/2).
@@ -137,8 +130,7 @@ class WireShellTerm : public Term {
   std::vector<Hit> cand_hit_, edge_hit_, vert_hit_;
   std::vector<double> vert_t_;  // closest point x_e + t (x_e+1 - x_e) to each vertex pair's vertex
   double max_stiffness_ = 0;
-  double max_overlap_ = 0;  // largest overlap of the last evaluation [m]
-  std::unique_ptr<FrictionHistory> friction_;
+  double max_overlap_ = 0;                       // largest overlap of the last evaluation [m]
   std::vector<FrictionHistory::Query> queries_;  // scratch of accumulate(): one per face pair
   std::vector<Vec3> friction_force_;             // friction on the wire per face pair [N]
   Vec3List edge_t_;                              // unit tangent of each face pair's wire edge
