@@ -8,8 +8,9 @@
 #                                                  runs or resumes the sweeps of the figures given
 #                                                  (fig5b, fig5a, fig4, fig1_3) in stages: every
 #                                                  point of every one of them gets seeds 1-2 first,
-#                                                  then 3-5, then the rest, so that an interrupted
-#                                                  campaign still has whole curves
+#                                                  then 3-5, then one seed more at a time (6, 7,
+#                                                  ...), so that an interrupted campaign still has
+#                                                  whole curves with the same seeds at every point
 #   bash results/paper/make.sh stop [FIG...]       stops the sweeps running on FIG (all figures by
 #                                                  default) with SIGTERM: each run going writes its
 #                                                  checkpoint at once; waits until they are gone
@@ -109,9 +110,11 @@ run() {  # FIGS THREADS: FIGS one figure or several joined by commas, taken stag
   done
   tmp=$(mktemp -d)  # the staged sweep files (global: run_stage writes them)
   trap 'rm -rf "$tmp"' EXIT
-  # Stages across all the figures given: every figure's seeds 1-2, then 3-5, then the rest.
-  local stage s
-  for stage in 2 5 "$most"; do
+  # Stages across all the figures given: every figure's seeds 1-2, then 3-5, then one seed
+  # more per stage, so that a campaign cut short has the same seeds at every grid point.
+  local stage s stages=(2 5)
+  for ((s = 6; s <= most; ++s)); do stages+=("$s"); done
+  for stage in "${stages[@]}"; do
     for f in "${list[@]}"; do
       s=$stage
       n=$(sweep_seeds "$f")
