@@ -9,6 +9,8 @@
 // and, pushed head-on into the wall, overshoot its Euler load by an order of magnitude before
 // round-off lets it buckle; so every released node also gets a tiny random transverse offset
 // (imperfection, `release_noise`), drawn from the same seeded stream.
+// With an elastic shell the guide is a contact body of the wire-shell term (a capsule on the
+// feed axis below the hole; engine/contact/wire_shell.hpp), so the shell cannot wrap it.
 #include <cstdint>
 #include <random>
 

@@ -165,6 +165,12 @@ Assembly assemble(const SceneParams& p) {
     ws.node_mass = a.mass.point_mass();
     ws.vertex_mass = m_min;
     ws.friction = fp;
+    // The guide outside the hole is a contact body, ten radii of feed axis below the rim's
+    // plane (wire_shell.hpp): a soft shell pushed out below the rim must not wrap the wire
+    // still outside (it reaches 1.7 R below the pole at eps = 1e4, xi = 30, l = 50).
+    const double hr = a.feeder.hole_radius;
+    ws.guide = true;
+    ws.guide_bottom_z = -std::sqrt(R * R - hr * hr) - 10.0 * R;
     a.wire_shell_params = ws;
     auto contact = std::make_unique<WireShellTerm>(mesh, ws);
     a.wire_shell = contact.get();

@@ -32,6 +32,129 @@ WireShellTerm::WireShellTerm(const ShellMesh& mesh, const WireShellParams& p)
     if (mesh.edge_faces[k][1] < 0)
       boundary_vertex_[mesh.edges[k][0]] = boundary_vertex_[mesh.edges[k][1]] = 1;
   }
+  if (p.guide) {
+    // The guide's pieces: faces with an unclamped vertex, edges between two such faces and
+    // interior vertices whose whole fan is such (inclusion-exclusion over their union).
+    const auto unclamped = [&](int v) { return mesh.clamped.empty() || !mesh.clamped[v]; };
+    guide_face_ok_.assign(mesh.num_faces(), 0);
+    for (int f = 0; f < mesh.num_faces(); ++f) {
+      for (int v : mesh.faces[f]) guide_face_ok_[f] |= unclamped(v) ? 1 : 0;
+    }
+    guide_edge_ok_.assign(mesh.edges.size(), 0);
+    for (size_t k = 0; k < mesh.edges.size(); ++k) {
+      const auto& ef = mesh.edge_faces[k];
+      guide_edge_ok_[k] = ef[1] >= 0 && guide_face_ok_[ef[0]] && guide_face_ok_[ef[1]];
+    }
+    guide_vertex_ok_.assign(mesh.num_vertices(), 0);
+    for (int v = 0; v < mesh.num_vertices(); ++v) {
+      bool ok = !boundary_vertex_[v] && !vertex_faces_[v].empty();
+      for (int f : vertex_faces_[v]) ok = ok && guide_face_ok_[f];
+      guide_vertex_ok_[v] = ok;
+    }
+  }
+}
+
+void WireShellTerm::rebuild_guide(const Vec3List& xs, const Vec3& top) {
+  guide_faces_.clear();
+  guide_edges_.clear();
+  guide_verts_.clear();
+  if (!p_.guide) return;
+  // Faces within r + t/2 + skin of the capsule [top, bottom]: while no vertex and not the top
+  // moved more than half the skin (the wire's rebuild rule; the top is a wire node), the others
+  // stay apart.
+  const Vec3 bottom(0.0, 0.0, p_.guide_bottom_z);
+  const double reach = p_.r + p_.half_thickness + p_.skin;
+  const Vec3 lo = top.cwiseMin(bottom) - Vec3::Constant(reach);
+  const Vec3 hi = top.cwiseMax(bottom) + Vec3::Constant(reach);
+  for (int f = 0; f < mesh_.num_faces(); ++f) {
+    if (!guide_face_ok_[f]) continue;
+    const auto& v = mesh_.faces[f];
+    const Vec3 fmin = xs[v[0]].cwiseMin(xs[v[1]]).cwiseMin(xs[v[2]]);
+    const Vec3 fmax = xs[v[0]].cwiseMax(xs[v[1]]).cwiseMax(xs[v[2]]);
+    if ((fmin.array() > hi.array()).any() || (fmax.array() < lo.array()).any()) continue;
+    if (segment_triangle_closest(top, bottom, xs[v[0]], xs[v[1]], xs[v[2]]).dist2 < reach * reach)
+      guide_faces_.push_back(f);
+  }
+  // The corrections of those faces (a piece within reach lies on faces within reach).
+  for (int f : guide_faces_) {
+    for (int k = 0; k < 3; ++k) {
+      if (guide_edge_ok_[mesh_.face_edges[f][k]]) guide_edges_.push_back(mesh_.face_edges[f][k]);
+      if (guide_vertex_ok_[mesh_.faces[f][k]]) guide_verts_.push_back(mesh_.faces[f][k]);
+    }
+  }
+  for (auto* list : {&guide_edges_, &guide_verts_}) {
+    std::sort(list->begin(), list->end());
+    list->erase(std::unique(list->begin(), list->end()), list->end());
+  }
+}
+
+double WireShellTerm::guide_evaluate(const RodState& s, RodForces* out) {
+  guide_contacts_ = 0;
+  guide_max_overlap_ = 0.0;
+  guide_max_stiffness_ = 0.0;
+  if (guide_faces_.empty() || s.n_free >= s.num_nodes()) return 0.0;
+  const int g = s.n_free;  // the first guide node: the capsule's top
+  const Vec3& top = s.x[g];
+  const Vec3 bottom(0.0, 0.0, p_.guide_bottom_z);
+  const Vec3 axis = bottom - top;
+  const double Dc = p_.r + p_.half_thickness;
+  double U = 0.0;
+  // One signed contact between the guide's point top + sg (bottom - top) and shell point Q
+  // (weights ws on vertices si); returns whether they touch.
+  auto contact = [&](double sg, const Vec3& Q, const Vec3& fallback_n, const int* si,
+                     const double* ws, int ns, double sign) {
+    const Vec3 d = top + sg * axis - Q;
+    const double dist2 = d.squaredNorm();
+    if (!(dist2 < Dc * Dc)) return false;
+    const double dist = std::sqrt(dist2);
+    const Vec3 n = dist > 1e-12 * p_.r ? Vec3(d / dist) : fallback_n;  // shell to guide
+    const double delta = Dc - dist;
+    U += sign * hertz_.energy(delta);
+    guide_max_overlap_ = std::max(guide_max_overlap_, delta);
+    if (out) {
+      Vec3 vs = Vec3::Zero();
+      for (int k = 0; k < ns; ++k) vs += ws[k] * s.shell_v[si[k]];
+      // The guide is kinematic (infinite mass): the dashpot's mass is the vertex's.
+      const double f = damped_normal_force(hertz_, delta, -(s.v[g] - vs).dot(n), p_.damping_ratio,
+                                           p_.vertex_mass);
+      const Vec3 F = sign * f * n;  // on the guide; -F on the shell
+      for (int k = 0; k < ns; ++k) out->shell_f[si[k]] -= ws[k] * F;
+      out->f[g] += (1.0 - sg) * F;
+    }
+    return true;
+  };
+  for (int f : guide_faces_) {  // + (guide, face)
+    const auto& v = mesh_.faces[f];
+    const Vec3 &a = s.shell_x[v[0]], &b = s.shell_x[v[1]], &c = s.shell_x[v[2]];
+    const TriangleClosest tc = segment_triangle_closest(top, bottom, a, b, c);
+    if (!(tc.dist2 < Dc * Dc)) continue;
+    const Vec3 Q = tc.w[0] * a + tc.w[1] * b + tc.w[2] * c;
+    Vec3 fn = (b - a).cross(c - a).normalized();
+    if (fn.dot(top + tc.s * axis - (a + b + c) / 3.0) < 0) fn = -fn;
+    if (contact(tc.s, Q, fn, v.data(), tc.w.data(), 3, +1.0)) {
+      ++guide_contacts_;
+      guide_max_stiffness_ =
+          std::max(guide_max_stiffness_, hertz_.stiffness(Dc - std::sqrt(tc.dist2)));
+    }
+  }
+  if (guide_contacts_ == 0) return U;
+  const Vec3 no_n = Vec3::UnitX();  // only for a piece exactly on the axis (measure zero)
+  for (int k : guide_edges_) {      // - (guide, shell edge)
+    const int si[2] = {mesh_.edges[k][0], mesh_.edges[k][1]};
+    const SegmentClosest c =
+        segment_segment_closest(top, bottom, s.shell_x[si[0]], s.shell_x[si[1]]);
+    const double ws[2] = {1.0 - c.t, c.t};
+    contact(c.s, s.shell_x[si[0]] + c.t * (s.shell_x[si[1]] - s.shell_x[si[0]]), no_n, si, ws, 2,
+            -1.0);
+  }
+  for (int vtx : guide_verts_) {  // + (guide, shell vertex)
+    const Vec3& Q = s.shell_x[vtx];
+    const double aa = axis.squaredNorm();
+    const double t = aa > 0 ? std::clamp((Q - top).dot(axis) / aa, 0.0, 1.0) : 0.0;
+    const double one = 1.0;
+    contact(t, Q, no_n, &vtx, &one, 1, +1.0);
+  }
+  return U;
 }
 
 void WireShellTerm::maybe_rebuild(const RodState& s) {
@@ -63,6 +186,7 @@ void WireShellTerm::rebuild(const RodState& s) {
   shell_at_build_ = s.shell_x;
   moved2_.assign(x_at_build_.size(), 0.0);
   shell_moved2_.assign(shell_at_build_.size(), 0.0);
+  if (!x_at_build_.empty()) rebuild_guide(shell_at_build_, x_at_build_.back());
   candidates_.clear();
   seg_edge_.clear();
   seg_vert_.clear();
@@ -385,6 +509,8 @@ double WireShellTerm::evaluate(const RodState& s, RodForces* out) {
     share(apply(vert_hit_[q], wi, ww, 2, &vtx, &one, 1), vert_owner_.data() + vert_owner_start_[q],
           vert_owner_start_[q + 1] - vert_owner_start_[q]);
   }
+  // The guide (adds exactly nothing while no face is within its reach).
+  if (p_.guide) U += guide_evaluate(s, out);
   return U;
 }
 
@@ -392,6 +518,7 @@ double WireShellTerm::accumulate(const RodState& s, RodForces& out) {
   const double U = evaluate(s, &out);
   double kmax = 0.0;
   for (const FacePair& c : face_pairs_) kmax = std::max(kmax, hertz_.stiffness(c.delta));
+  kmax = std::max(kmax, guide_max_stiffness_);
   max_stiffness_ = kmax * (friction_ ? 1.0 + p_.friction.stiffness_ratio : 1.0);
   if (!friction_) return U;
   for (const FacePair& c : face_pairs_) friction_->mark(ContactKey{c.e, c.f});
@@ -447,6 +574,9 @@ double WireShellTerm::accumulate(const RodState& s, RodForces& out) {
 }
 
 std::string WireShellTerm::failure() const {
+  if (guide_max_overlap_ >= hertz_.D)
+    return "guide-shell contact: the shell reached the feed axis outside the hole (overlap " +
+           std::to_string(guide_max_overlap_ / p_.r) + " r)";
   if (max_overlap_ < hertz_.D) return {};
   return "wire-shell contact: the wire's axis reached the shell's mid-surface (overlap " +
          std::to_string(max_overlap_ / p_.r) + " r)";
@@ -491,6 +621,8 @@ void WireShellTerm::save(StateWriter& out) const {
 }
 void WireShellTerm::load(StateReader& in) {
   serialize(*this, in);
+  // The guide's candidates are a function of the state at the build (not stored).
+  if (!x_at_build_.empty()) rebuild_guide(shell_at_build_, x_at_build_.back());
 }
 
 }  // namespace wirepack

@@ -15,6 +15,17 @@
 // (the Engine II mechanism) acts on the (edge, face) pairs, each bounded by its share of the
 // net normal force. Forces go to the wire nodes by the segment parameter and to the shell
 // vertices by barycentric weights (action = reaction).
+//
+// The guide (optional, `guide`): outside the hole the wire is kinematic and moves on the feed
+// axis (engine/feeder.hpp); a soft shell pushed out below the clamped rim can wrap that axis,
+// and the next released node would then start inside the shell. The guide is therefore a
+// contact body too: a rigid capsule of radius r on the feed axis (x = y = 0) from the first
+// guide node down to z = guide_bottom_z, against the shell by the same inclusion-exclusion and
+// the same normal law (Hertz, barrier, dashpot with the vertex mass), frictionless (a smooth
+// nozzle, no history). Pieces that are clamped throughout take no part. Its force goes to the
+// shell vertices and, by the segment parameter, its reaction to the first guide node (so the
+// feeder's power counts the work of the moving guide). Its candidate faces are rebuilt with the
+// wire's list (a function of the shell at the build), so a checkpoint needs nothing more.
 #include <array>
 #include <limits>
 #include <utility>
@@ -40,6 +51,8 @@ struct WireShellParams {
   double node_mass = 0;     // effective wire node mass of a point load [kg] (WireMass::point_mass)
   double vertex_mass = 0;   // shell vertex mass [kg]
   FrictionParams friction;  // off when mu_s = 0
+  bool guide = false;       // the kinematic guide on the feed axis is a contact body
+  double guide_bottom_z = 0;  // z of the guide capsule's far end [m] (below the hole)
 };
 
 class WireShellTerm : public FrictionalTerm {
@@ -62,6 +75,10 @@ class WireShellTerm : public FrictionalTerm {
   // Largest overlap of a (wire edge, face, shell edge or vertex) piece at the last accumulate
   // (0 when none) [m].
   double max_overlap() const { return max_overlap_; }
+  // Guide-shell contacts (faces touching the guide) and their largest overlap [m] at the last
+  // evaluation.
+  int guide_contacts() const { return guide_contacts_; }
+  double guide_max_overlap() const { return guide_max_overlap_; }
 
  private:
   // Checkpoints: save() and load() in one (engine/state_archive.hpp).
@@ -81,6 +98,10 @@ class WireShellTerm : public FrictionalTerm {
   void maybe_rebuild(const RodState& s);
   void rebuild(const RodState& s);
   int active_edges(const RodState& s) const { return std::min(s.n_free, s.num_edges()); }
+  // The guide's candidate pieces from the shell (x_shell) and the guide's top at the build.
+  void rebuild_guide(const Vec3List& x_shell, const Vec3& top);
+  // Guide-shell contact energy [J]; adds its forces into out when given.
+  double guide_evaluate(const RodState& s, RodForces* out);
 
   const ShellMesh& mesh_;
   WireShellParams p_;
@@ -134,6 +155,12 @@ class WireShellTerm : public FrictionalTerm {
   std::vector<FrictionHistory::Query> queries_;  // scratch of accumulate(): one per face pair
   std::vector<Vec3> friction_force_;             // friction on the wire per face pair [N]
   Vec3List edge_t_;                              // unit tangent of each face pair's wire edge
+  // Guide: pieces that take part (a face with an unclamped vertex; an edge whose two faces
+  // do; an interior vertex whose fan does), and the candidates within reach at the build.
+  std::vector<char> guide_face_ok_, guide_edge_ok_, guide_vertex_ok_;
+  std::vector<int> guide_faces_, guide_edges_, guide_verts_;
+  int guide_contacts_ = 0;
+  double guide_max_overlap_ = 0, guide_max_stiffness_ = 0;
 };
 
 }  // namespace wirepack

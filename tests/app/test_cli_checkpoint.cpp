@@ -166,10 +166,11 @@ namespace {
 // checkpoint interval: exit 128 + 15, no run file; the same command resumes it bitwise.
 TEST(CliCheckpoint, SigtermStopsARunWithItsCheckpoint) {
   TempDir dir;
-  // kScene to l = 14: ~6 s on one idle core, long enough for a progress line (every 2 s);
-  // under the sanitizers kScene's own l = 7 takes ~100 s, long enough.
+  // kScene to l = 22: 5.4 s on one idle core (2026-12-04; l = 14 took 1.8 s there and ended
+  // before its first progress line, every 2 s); under the sanitizers kScene's own l = 7 takes
+  // ~100 s, long enough.
   std::string scene = kScene;
-  if (!testing::kUnderSanitizers) scene.replace(scene.find("\"l_max\": 7"), 10, "\"l_max\": 14");
+  if (!testing::kUnderSanitizers) scene.replace(scene.find("\"l_max\": 7"), 10, "\"l_max\": 22");
   dir.write("s.json", scene);
   const auto ref = run_wirepack(dir, "run s.json --out ref.h5 --checkpoint-every 0");
   ASSERT_EQ(ref.code, 0) << ref.err;
