@@ -430,6 +430,7 @@ ContactOverlaps Simulation::max_overlaps() const {
   if (a.self_contact) o.wire_wire = a.self_contact->max_overlap();
   if (a.wall) o.wall = a.wall->max_overlap();
   if (a.wire_shell) o.wire_shell = a.wire_shell->max_overlap();
+  if (a.wire_shell) o.guide = a.wire_shell->guide_max_overlap();
   return o;
 }
 

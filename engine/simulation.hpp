@@ -25,6 +25,7 @@ struct ContactOverlaps {
   double wire_wire = 0;   // 2 r - d of two wire capsules
   double wall = 0;        // |x| + r - R of a node with the rigid sphere (not its hole's rim)
   double wire_shell = 0;  // r + t/2 - d of a wire capsule with the elastic shell's slab
+  double guide = 0;       // r + t/2 - d of the guide outside the hole with the shell's slab
 };
 
 class Simulation {

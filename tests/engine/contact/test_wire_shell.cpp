@@ -8,6 +8,7 @@
 #include <Eigen/Dense>
 
 #include "engine/contact/wire_shell.hpp"
+#include "engine/contact/wire_shell_fixtures.hpp"
 #include "engine/fd_harness.hpp"
 #include "engine/shell/mesh_builders.hpp"
 #include "engine/shell/shell_fixtures.hpp"
@@ -17,17 +18,9 @@ namespace {
 
 constexpr double kR = 0.5e-3;   // wire radius [m]
 constexpr double kH = 0.25e-3;  // shell half-thickness [m]
-constexpr double kE = 1e9, kNu = 1.0 / 3.0;
 
 WireShellParams params() {
-  WireShellParams p;
-  p.r = kR;
-  p.half_thickness = kH;
-  p.E_star = 1.0 / ((1 - kNu * kNu) / kE + (1 - kNu * kNu) / 1e6);
-  p.skin = 0.5 * kR;
-  p.node_mass = 1e-4;
-  p.vertex_mass = 1e-4;
-  return p;
+  return testing::wire_shell_params();  // r = kR, t/2 = kH
 }
 
 double hertz_energy(double delta) {
