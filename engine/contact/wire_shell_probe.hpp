@@ -10,8 +10,10 @@
 namespace wirepack {
 
 // Force of the wire on every shell vertex (nv) [N]: Hertz plus the normal dashpot at the
-// state's velocities, spread by barycentric weights (the term's own force, friction left out).
-// The wire takes the opposite total (action = reaction). Needs s.shell_x of the mesh's size.
+// state's velocities, spread by barycentric weights (the term's own force, friction left out;
+// with p.guide, the guide outside the hole included). The wire takes the opposite total
+// (action = reaction; of the guide's, the part not on its first node goes to the feeder).
+// Needs s.shell_x of the mesh's size.
 Vec3List wire_shell_vertex_forces(const ShellMesh& mesh, WireShellParams p, const RodState& s);
 
 }  // namespace wirepack
