@@ -293,7 +293,7 @@ class Scene:
                 bar.Title = "kappa R"
                 bar.ComponentTitle = ""
                 bar.WindowLocation = "Any Location"
-                bar.Position = [0.89, 0.25]
+                bar.Position = list(BAR_RIGHT)
                 bar.ScalarBarLength = 0.5
                 bar.TitleColor = bar.LabelColor = [0.1, 0.1, 0.1]
                 bar.RangeLabelFormat = "%.3g"
@@ -321,7 +321,7 @@ class Scene:
                                  "clamped": "clamped"}[self.field]
                     bar.ComponentTitle = ""
                     bar.WindowLocation = "Any Location"
-                    bar.Position = [0.03, 0.25]
+                    bar.Position = list(BAR_LEFT)
                     bar.ScalarBarLength = 0.5
                     bar.TitleColor = bar.LabelColor = [0.1, 0.1, 0.1]
                     bar.RangeLabelFormat = "%.3g"
@@ -342,6 +342,12 @@ class Scene:
 # (position in units of R, vertical view angle in degrees).
 CAMERA_POSITION = (0.0, -3.9, 1.0)
 VIEW_ANGLE = 30.0
+# The colour bars (lower-left corners as fractions of the picture's width and height; each bar
+# with its labels and title is ~0.08 wide) and the band of the picture between them that the
+# packing may fill: x in [0.12, 0.88], i.e. 0.76 of the half-width about the centre.
+BAR_LEFT = (0.03, 0.25)   # the shell's field
+BAR_RIGHT = (0.89, 0.25)  # kappa R
+SIDE_MARGIN = 0.76
 
 
 def camera_axes():
@@ -354,24 +360,27 @@ def camera_axes():
     return forward, up, np.cross(forward, up)
 
 
-def fits(points, scale, R, aspect, margin=0.97):
-    """Whether every point (n x 3) [m] lies inside `margin` of the picture's half-width and
-    half-height, seen by the perspective camera at `scale` times its distance."""
+def fits(points, scale, R, aspect, margin=0.97, side=None):
+    """Whether every point (n x 3) [m] lies inside `margin` of the picture's half-height and
+    `side` of its half-width (default: the band between the colour bars, SIDE_MARGIN), seen by
+    the perspective camera at `scale` times its distance."""
     import numpy as np
 
+    side = SIDE_MARGIN if side is None else side
     forward, up, right = camera_axes()
     v = np.asarray(points, dtype=float) - scale * R * np.asarray(CAMERA_POSITION)
     depth = v @ forward
     if np.any(depth <= 0):
         return False
-    t = margin * np.tan(np.radians(VIEW_ANGLE / 2))
-    return bool(np.all(np.abs(v @ up) <= t * depth) and
-                np.all(np.abs(v @ right) <= aspect * t * depth))
+    t = np.tan(np.radians(VIEW_ANGLE / 2))
+    return bool(np.all(np.abs(v @ up) <= margin * t * depth) and
+                np.all(np.abs(v @ right) <= side * aspect * t * depth))
 
 
-def framing(run, aspect, margin=0.97):
+def framing(run, aspect, margin=0.97, side=None):
     """The camera's distance as a multiple of the default one (>= 1): the smallest (to 0.1 %) at
-    which every snapshot's wire and shell lie inside `margin` of the picture (fits), so that one run's
+    which every snapshot's wire and shell lie inside `margin` of the picture's height and between
+    its colour bars (fits), so that one run's
     pictures and movie share one framing. Moving the camera back along its axis leaves a point's
     offsets across the view unchanged and adds to its depth, so each point's condition
     |offset| <= t depth is linear in the distance: the scale is a maximum over the points. 1
@@ -386,10 +395,12 @@ def framing(run, aspect, margin=0.97):
         if shell is not None:
             pts.append(shell["x"])
     p = np.vstack(pts)
+    side = SIDE_MARGIN if side is None else side
     forward, up, right = camera_axes()
-    t = margin * np.tan(np.radians(VIEW_ANGLE / 2))
+    t = np.tan(np.radians(VIEW_ANGLE / 2))
     # depth = p . forward + scale * |C|, with C the default camera position [m].
-    need = np.maximum(np.abs(p @ up) / t, np.abs(p @ right) / (aspect * t)) - p @ forward
+    need = np.maximum(np.abs(p @ up) / (margin * t),
+                      np.abs(p @ right) / (side * aspect * t)) - p @ forward
     scale = float(np.max(need)) / (run.R * np.linalg.norm(CAMERA_POSITION))
     # Rounded up to 0.1 %: the points at the limit stay inside it whatever the rounding.
     return max(1.0, math.ceil(scale * 1000.0) / 1000.0)

@@ -17,9 +17,10 @@
 #                                                  default) with SIGTERM: each run going writes its
 #                                                  checkpoint at once; waits until they are gone
 #   bash results/paper/make.sh analyze [FIG...]    tables and plots from FIG/sweep into FIG/analysis
-#   bash results/paper/make.sh pictures FIG        every snapshot of FIG's runs drawn by wirepack
+#   bash results/paper/make.sh pictures FIG [last] every snapshot of FIG's runs drawn by wirepack
 #                                                  render (ParaView; wire at half its radius,
-#                                                  coloured by kappa R) into FIG/pictures
+#                                                  coloured by kappa R) into FIG/pictures; with
+#                                                  "last" only each run's last snapshot
 # The run data (FIG/sweep: manifest.json, joblog.csv, runs/*.h5) are committed: whoever picks the
 # campaign up resumes it. A killed run resumes from its checkpoint (runs/X.h5.ckpt, every 120 s
 # of wall time here; commit them too), bitwise as if it had never been interrupted.
@@ -162,15 +163,16 @@ analyze() {  # FIG
   "$wp" analyze "$here/$f/sweep" --out "$here/$f/analysis"
 }
 
-pictures() {  # FIG
-  local f=$1
+pictures() {  # FIG [last]
+  local f=$1 which=${2:-all}
   [ -d "$here/$f/sweep/runs" ] || { echo "== $f: no run data yet"; return 0; }
   mkdir -p "$here/$f/pictures"
   for run in "$here/$f"/sweep/runs/*.h5; do
-    local name n
+    local name n first=0
     name=$(basename "$run" .h5 | sed 's/_[0-9a-f]\{12\}$//')
     n=$(h5ls "$run/snapshots" | wc -l)
-    for k in $(seq 0 $((n - 1))); do
+    [ "$which" != last ] || first=$((n - 1))
+    for k in $(seq "$first" $((n - 1))); do
       "$wp" render "$run" --snapshot "$k" --half-radius --out "$here/$f/pictures/${name}_k$k.png"
     done
   done
@@ -192,11 +194,12 @@ case "$cmd" in
     for f in "${@:-${figs[@]}}"; do analyze "$f"; done
     ;;
   pictures)
-    [ $# -ge 2 ] || { echo "usage: make.sh pictures FIG" >&2; exit 2; }
-    pictures "$2"
+    [ $# -ge 2 ] && { [ $# -eq 2 ] || [ "$3" = last ]; } ||
+      { echo "usage: make.sh pictures FIG [last]" >&2; exit 2; }
+    pictures "$2" "${3:-all}"
     ;;
   *)
-    echo "usage: make.sh status | run FIG[,FIG...] [THREADS] | stop [FIG...] | analyze [FIG...] | pictures FIG" >&2
+    echo "usage: make.sh status | run FIG[,FIG...] [THREADS] | stop [FIG...] | analyze [FIG...] | pictures FIG [last]" >&2
     exit 2
     ;;
 esac

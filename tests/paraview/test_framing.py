@@ -4,7 +4,10 @@ runs with known extents.
   - a sphere of radius R (the shell at rest, a wire inside): the default camera (scale 1);
   - the same sphere drawn out to 2 R along x and 2.5 R down along z (a soft thin shell pulled by
     the wire): a scale at which every point is in the picture, and 1 % less at which one is not;
-  - one run, one framing: the largest of its snapshots', whichever snapshot is drawn.
+  - one run, one framing: the largest of its snapshots', whichever snapshot is drawn;
+  - a shell drawn out sideways (2.2 R along x) stays clear of the colour bars, x in [0.12, 0.88]
+    of the picture's width, where the picture's full width (the former framing) put it under
+    them.
 Exit 77 (ctest: skipped) without numpy; WIREPACK_PARAVIEW_REQUIRED=1 fails instead.
   tests/paraview/test_framing.py [SOURCE_DIR]"""
 import os
@@ -69,4 +72,23 @@ check(not rp.fits(drawn, s - 0.01, R, ASPECT), "scale %.2f is not the smallest" 
 
 both = rp.framing(FakeRun([rest, drawn, rest]), ASPECT)
 check(both == s, "one run, one framing: %.2f against %.2f" % (both, s))
+
+
+def screen_x(points, scale):
+    """Where points fall across the picture, 0 (left edge) to 1 (right edge)."""
+    forward, up, right = rp.camera_axes()
+    v = np.asarray(points) - scale * R * np.asarray(rp.CAMERA_POSITION)
+    t = np.tan(np.radians(rp.VIEW_ANGLE / 2))
+    return 0.5 + 0.5 * (v @ right) / (ASPECT * t * (v @ forward))
+
+
+side = rest * np.array([2.2, 1.0, 1.0])
+s_side = rp.framing(FakeRun([side]), ASPECT)
+x = screen_x(side, s_side)
+check(x.min() >= 0.12 - 1e-9 and x.max() <= 0.88 + 1e-9,
+      "sideways shell at scale %.3f spans x %.3f to %.3f of the width, into the colour bars"
+      % (s_side, x.min(), x.max()))
+s_full = rp.framing(FakeRun([side]), ASPECT, side=0.97)
+x = screen_x(side, s_full)
+check(x.max() > 0.89, "with the full width the sideways shell reaches only x = %.3f" % x.max())
 print("test_framing: ok (drawn-out shell: scale %.2f)" % s)
