@@ -2,7 +2,9 @@
 # What the guide moved: every complete run of the campaign that also exists as a pre-guide run
 # (the same scene and seed, so the same file name, at commit 920dc9d, the last before the wire
 # outside the hole became a contact body), the l where the two first differ
-# (first_difference.sh) and the paper's statistics of both: D and D_chord maximised over the
+# (first_difference.sh; "none": equal as far as both go; "same file": the pre-guide run file
+# itself was kept, so whether the guide changes it is known only from a rerun, listed in
+# results/paper/README.md) and the paper's statistics of both: D and D_chord maximised over the
 # figure's D window (from each commit's analysis/runs.csv).
 #   bash results/paper/guide_moved.sh [FIG...]      (default: fig5b fig5a fig4 fig1_3)
 # Writes results/paper/guide_moved.csv (through a temporary name) and prints it. Run
@@ -37,11 +39,15 @@ for f in "${figs[@]}"; do
       before=$(stats "$file" < "$tmp/pre.csv")
       [ -n "$before" ] || continue  # no pre-guide run of this scene and seed
       git -C "$root" show "$pre:results/paper/$f/sweep/$file" > "$tmp/pre.h5"
-      where=$(bash "$here/first_difference.sh" "$tmp/pre.h5" "$here/$f/sweep/$file")
-      case "$where" in
-        "first difference at l = "*) where=$(echo "$where" | sed 's/^first difference at l = \([^ ]*\).*/\1/') ;;
-        *) where=none ;;
-      esac
+      if cmp -s "$tmp/pre.h5" "$here/$f/sweep/$file"; then
+        where="same file"  # the pre-guide run itself, kept: only a rerun can tell
+      else
+        where=$(bash "$here/first_difference.sh" "$tmp/pre.h5" "$here/$f/sweep/$file")
+        case "$where" in
+          "first difference at l = "*) where=$(echo "$where" | sed 's/^first difference at l = \([^ ]*\).*/\1/') ;;
+          *) where=none ;;
+        esac
+      fi
       echo "$f,$file,$seed,$where,${before%,*},${after%,*},${before#*,},${after#*,}"
     done >> "$tmp/out.csv"
 done

@@ -11,7 +11,7 @@ set grid
 set key top left
 $d0_0 << EOD
 0 0.08164542714744638 0
-0.5 0.805316291916792 0
+0.5 0.7925059131010336 0
 EOD
 reset
 set grid
