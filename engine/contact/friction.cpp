@@ -12,7 +12,9 @@ void FrictionHistory::finish_marking() {
 }
 
 FrictionHistory::Entry* FrictionHistory::Table::find(std::uint64_t key) {
-  if (size_ == 0) return nullptr;
+  // kEmpty marks free slots: as a key (the pair (-1, -1)) it would "find" the first free slot
+  // probed and return whatever entry that slot last held.
+  if (size_ == 0 || key == kEmpty) return nullptr;
   const std::size_t mask = keys_.size() - 1;
   for (std::size_t i = slot(key);; i = (i + 1) & mask) {
     if (keys_[i] == key) return &entries_[i];

@@ -125,7 +125,7 @@ class FrictionHistory {
     static void serialize(Self& table, Archive& ar);
 
    private:
-    static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};  // never a key: a >= 0
+    static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};  // (-1, -1): find() refuses it
     std::size_t slot(std::uint64_t key) const {
       return static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> shift_);
     }

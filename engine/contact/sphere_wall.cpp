@@ -80,8 +80,11 @@ double SphereWallTerm::accumulate(const RodState& s, RodForces& out) {
       for (int e = e_lo; e <= e_hi; ++e) v_surf += w * s.omega[e] * out.edge_t[e].cross(r * n);
     }
     // The wall is body B (at rest); the normal of the contact points from B to A: -n.
-    const ContactKey nb[2] = {{i - 1, -1}, {i + 1, -1}};
-    const Vec3 ft = friction_->force(ContactKey{i, -1}, -n, fn, kn, v_surf, p_.node_mass, nb, 2);
+    // Neighbours: the nodes beside i, in that order (the tip, node 0, has only node 1).
+    const ContactKey both[2] = {{i - 1, -1}, {i + 1, -1}};
+    const ContactKey* nb = i > 0 ? both : both + 1;
+    const Vec3 ft =
+        friction_->force(ContactKey{i, -1}, -n, fn, kn, v_surf, p_.node_mass, nb, i > 0 ? 2 : 1);
     out.f[i] += ft;
     if (twist) {
       // Torque of the surface force about the centreline, shared by the two edges.

@@ -138,5 +138,42 @@ TEST(FrictionHistory, ManyContactsKeepTheirOwnSpringsAcrossGrowthAndDrops) {
   EXPECT_EQ(h.force(keys[1], kN, kFn, kKn, Vec3::Zero(), kM, nullptr, 0).norm(), 0.0);
 }
 
+// The table marks free slots with the key of the pair (-1, -1). Asked for that key (the wall's
+// tip node 0 named node -1 as its neighbour), the table returned the first free slot it probed,
+// with whatever entry that slot had last held: a new contact inherited the spring of a contact
+// long gone, which a run restored from a checkpoint (its free slots empty) did not, so the two
+// parted (found by the kill campaign, app.KillCampaign, under load). Here every slot that held
+// one of many springs is freed but one contact stays (the table is not empty); a new contact
+// whose neighbours name (-1, -1) must start relaxed, as one without neighbours does.
+TEST(FrictionHistory, TheFreeSlotsKeyIsNeverAContact) {
+  FrictionHistory h(params());
+  std::vector<ContactKey> keys;
+  for (int i = 1; i <= 300; ++i) keys.push_back({i, -1});
+  h.begin_trial(1.0);
+  for (const auto& k : keys) h.mark(k);
+  h.finish_marking();
+  for (const auto& k : keys) h.force(k, kN, kFn, kKn, Vec3(1e-4, 0, 0), kM, nullptr, 0);
+  h.commit();  // 300 springs of -0.08 N in x
+  h.begin_trial(1.0);
+  h.mark(keys.back());
+  h.finish_marking();
+  h.force(keys.back(), kN, kFn, kKn, Vec3::Zero(), kM, nullptr, 0);
+  h.commit();  // all but the last opened: their slots free again
+  ASSERT_EQ(h.size(), 1u);
+  h.begin_trial(0.0);
+  h.mark(keys.back());
+  h.mark(ContactKey{0, -1});
+  h.mark(ContactKey{299, -1});
+  h.finish_marking();
+  const ContactKey sentinel[1] = {{-1, -1}};
+  const Vec3 f = h.force(ContactKey{0, -1}, kN, kFn, kKn, Vec3::Zero(), kM, sentinel, 1);
+  EXPECT_EQ(f.norm(), 0.0) << "a new contact inherited " << f.transpose() << " N from a free slot";
+  // With a real neighbour after it, the new contact takes that one's state (still touching:
+  // scaled by load, here equal), not the free slot's.
+  const ContactKey nb[2] = {{-1, -1}, keys.back()};
+  const Vec3 g = h.force(ContactKey{299, -1}, kN, kFn, kKn, Vec3::Zero(), kM, nb, 2);
+  EXPECT_NEAR(g[0], -0.08, 1e-12);
+}
+
 }  // namespace
 }  // namespace wirepack
