@@ -16,7 +16,7 @@ EOD
 reset
 set grid
 set key top left
-set title "D = max of D(l) over l in [5, 50]: mean and SEM over seeds"
+set title "D = max of D(l) over l in [5, 60]: mean and SEM over seeds"
 set xlabel "mu_s"
 set ylabel "D"
 set yrange [0:*]
