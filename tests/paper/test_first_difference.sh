@@ -46,6 +46,20 @@ expect "equal to l = 0.2 (A ends at l = 0.2, B at l = 0.4)" "$tmp/short.csv" "$t
 expect_exit 2 "$tmp/a.csv" "$tmp/cols.csv"
 expect_exit 2 "$tmp/a.csv" "$tmp/none.h5"
 
+# --steps: one run recorded every 10 steps, the other every 5 (other l intervals); the rows at
+# the same step count are compared.
+printf 'l,U_b,wall_s,steps\n0,1,0.1,0\n1,2,0.2,10\n2,3,0.3,20\n3,4,0.4,30\n' > "$tmp/s10.csv"
+printf 'l,U_b,wall_s,steps\n0,1,9,0\n0.5,1.5,9,5\n1,2,9,10\n1.5,2.5,9,15\n2,3,9,20\n' > "$tmp/s5.csv"
+sed 's/^2,3,9,20$/2,3.0000000000000004,9,20/' "$tmp/s5.csv" > "$tmp/s5bit.csv"
+expect_steps() {  # EXPECTED A B
+  local got
+  got=$(bash "$fd" --steps "$2" "$3" 2>&1) || got="exit $?: $got"
+  [ "$got" = "$1" ] || { echo "FAIL: --steps $(basename "$2") vs $(basename "$3"): expected '$1', got '$got'"; fail=1; }
+}
+expect_steps "equal at 3 common steps, to l = 2 (A ends at l = 3, B at l = 2)" "$tmp/s10.csv" "$tmp/s5.csv"
+expect_steps "first difference at step 20, l = 2 (equal at 2 earlier common steps; columns U_b)" \
+  "$tmp/s10.csv" "$tmp/s5bit.csv"
+
 # Real run files: one rigid scene to l = 3 and to l = 4 (the same run until the shorter ends),
 # and with friction (its stick springs change the stability step from the start).
 cd "$tmp"
