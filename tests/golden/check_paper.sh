@@ -2,7 +2,8 @@
 # The paper reproduction's committed tables are what `wirepack analyze` makes from its committed
 # run data (issue 15): for every figure of results/paper with run files and an analysis folder,
 # the analysis is rerun into a temporary folder and every CSV compared byte for byte with the
-# committed one, and so are a figure's tables along l (along_l.sh, rerun). Exit 77 (skipped)
+# committed one, and so are a figure's tables along l (along_l.sh, rerun) and the sense blocks
+# of Figs. 5a and 5b (results/paper/reversals.csv, reversals.sh rerun). Exit 77 (skipped)
 # while no figure has both yet.
 # In a git checkout where results/paper differs from HEAD only in run data (FIG/sweep/...: a
 # campaign going on beside the tests, its tables not remade yet), HEAD's tables and run data are
@@ -68,6 +69,18 @@ for dir in "$paper"/*/; do
   checked=$((checked + 1))
   echo "results/paper/$fig: analysis tables match the run data"
 done
+# The sense blocks and reversal onsets per run (reversals.sh), remade from the same run data.
+if [ -f "$paper/reversals.csv" ]; then
+  run "$tmp/reversals.log" env WIREPACK="$wirepack" PAPER_DIR="$paper" \
+    REVERSALS_CSV="$tmp/reversals.csv" bash "$2/results/paper/reversals.sh"
+  if ! diff -q "$paper/reversals.csv" "$tmp/reversals.csv" > /dev/null; then
+    { diff "$paper/reversals.csv" "$tmp/reversals.csv" || true; } | head -20
+    echo "results/paper/reversals.csv is not what the run data make: rerun" \
+      "bash results/paper/reversals.sh"
+    exit 1
+  fi
+  echo "results/paper/reversals.csv matches the run data"
+fi
 if [ "$checked" = 0 ]; then
   echo "no figure of results/paper has run data and tables yet"
   exit 77
