@@ -6,6 +6,9 @@
 # 2 <= |d| < 5 differs, >= 5 disagrees; "not run" where the campaign has no data yet. Fig. 5's
 # statements about D have no number: D_chord (the phase diagrams' order parameter) below 0.1
 # counts as vanishing.
+# Also rewrites the section between "<!-- curves -->" and "<!-- /curves -->": Fig. 5's curves
+# point by point (seeds, the literal D, D_chord and D_kappa, mean ± SE over the seeds, from
+# FIG/analysis/D_vs_<param>.csv) and each figure's critical point (FIG/analysis/critical.csv).
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 
@@ -102,10 +105,48 @@ D_chord, stiff shell at strong friction, ε = 1, μs = 1 (Fig. 5a)|vanishes|eps|
 D_chord, soft shell, ε = 10⁴, μs = 1 (Fig. 5a)|> 0|eps|10000|fig5a/analysis/D_vs_eps.csv|positive
 ROWS
 )
+# curve FIG PARAM SYMBOL CRITICAL TITLE: the markdown table of FIG/analysis/D_vs_PARAM.csv (one row per
+# grid point: seeds, D, D_chord, D_kappa as mean ± SE, 3 decimals) and a line with the critical
+# point of FIG/analysis/critical.csv (x_c, its bootstrap interval, the model AIC prefers and
+# the four AICs); nothing if the figure has no table yet.
+curve() {
+  local fig=$1 param=$2 sym=$3 xc=$4 title=$5
+  local csv=$here/$fig/analysis/D_vs_$param.csv crit=$here/$fig/analysis/critical.csv
+  [ -f "$csv" ] || return 0
+  echo "**$title** (\`$fig/analysis/D_vs_$param.csv\`; the order parameter D_chord):"
+  echo
+  echo "| $sym | seeds | D (literal) | D_chord | D_κ |"
+  echo "| --- | --- | --- | --- | --- |"
+  awk -F, '
+    NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next }
+    function pm(m, s) { return $c[m] == "nan" || $c[m] == "" ? "–" : sprintf("%.3f ± %.3f", $c[m], $c[s]) }
+    { printf "| %s | %d | %s | %s | %s |\n", $1, $c["n"], pm("D_mean", "D_sem"),
+        pm("D_chord_mean", "D_chord_sem"), pm("D_kappa_mean", "D_kappa_sem") }' "$csv"
+  [ -f "$crit" ] || return 0
+  echo
+  awk -F, -v xc="$xc" '
+    NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next }
+    $c["status"] != "ok" { printf "Critical point: %s (%s).\n", $c["status"], $c["note"]; next }
+    {
+      f = $c["scale"] == "log10" ? "%.3g" : "%.3f"  # grid values of a log axis: 30, not 30.000
+      printf "Critical point (`critical.csv`): %s = " f " [" f ", " f "], %s model (AIC: continuous %.1f, smooth %.1f, constant %.1f, line %.1f; the interval from %d bootstrap resamples of the seeds); %d runs, %d failed, %d missing.\n",
+        xc, $c["x_c"], $c["x_c_lo"], $c["x_c_hi"], $c["model"], $c["aic_continuous"],
+        $c["aic_smooth"], $c["aic_constant"], $c["aic_line"], $c["resamples"], $c["values"],
+        $c["n_failed"], $c["n_missing"] }' "$crit"
+}
+curves=$(
+  curve fig5b mu_s μs μc "Fig. 5b: D(μs) at ρ = 20, ξ = 10, ε = 10³, maximised over l ∈ [5, 50]"
+  echo
+  curve fig5a eps ε ε_c "Fig. 5a: D(ε) at ρ = 20, ξ = 30, μs = 1, maximised over l ∈ [5, 50]"
+)
 echo "$table"
+echo
+echo "$curves"
 readme=$here/README.md
-awk -v table="$table" '
+awk -v table="$table" -v curves="$curves" '
   /<!-- table -->/ { print; print table; skip = 1; next }
   /<!-- \/table -->/ { skip = 0 }
+  /<!-- curves -->/ { print; print curves; skip = 1; next }
+  /<!-- \/curves -->/ { skip = 0 }
   !skip' "$readme" > "$readme.part"
 mv "$readme.part" "$readme"

@@ -3,8 +3,10 @@
 # run data (issue 15): for every figure of results/paper with run files and an analysis folder,
 # the analysis is rerun into a temporary folder and every CSV compared byte for byte with the
 # committed one, and so are a figure's tables along l (along_l.sh, rerun) and the sense blocks
-# of Figs. 5a and 5b (results/paper/reversals.csv, reversals.sh rerun). Exit 77 (skipped)
-# while no figure has both yet.
+# of Figs. 5a and 5b (results/paper/reversals.csv, reversals.sh rerun), and the README's
+# generated sections are what their scripts make of those tables (table.sh: the comparison table
+# and Fig. 5's curves; reversals.sh: the sense-block tables). Exit 77 (skipped) while no figure
+# has both yet.
 # In a git checkout where results/paper differs from HEAD only in run data (FIG/sweep/...: a
 # campaign going on beside the tests, its tables not remade yet), HEAD's tables and run data are
 # checked (git archive), so the test does not fail on a working tree the campaign has moved on;
@@ -69,17 +71,53 @@ for dir in "$paper"/*/; do
   checked=$((checked + 1))
   echo "results/paper/$fig: analysis tables match the run data"
 done
-# The sense blocks and reversal onsets per run (reversals.sh), remade from the same run data.
+# section FILE FIRST LAST: the lines of FILE strictly between the lines FIRST and LAST.
+section() {
+  awk -v first="$2" -v last="$3" '$0 == last { on = 0 } on; $0 == first { on = 1 }' "$1"
+}
+# The sense blocks and reversal onsets per run (reversals.sh), remade from the same run data;
+# the tables it prints are the README's sections between its markers.
 if [ -f "$paper/reversals.csv" ]; then
-  run "$tmp/reversals.log" env WIREPACK="$wirepack" PAPER_DIR="$paper" \
-    REVERSALS_CSV="$tmp/reversals.csv" bash "$2/results/paper/reversals.sh"
+  env WIREPACK="$wirepack" PAPER_DIR="$paper" REVERSALS_CSV="$tmp/reversals.csv" \
+    bash "$2/results/paper/reversals.sh" > "$tmp/reversals.out" 2> "$tmp/reversals.log" ||
+    { cat "$tmp/reversals.log"; exit 1; }
   if ! diff -q "$paper/reversals.csv" "$tmp/reversals.csv" > /dev/null; then
     { diff "$paper/reversals.csv" "$tmp/reversals.csv" || true; } | head -20
     echo "results/paper/reversals.csv is not what the run data make: rerun" \
       "bash results/paper/reversals.sh"
     exit 1
   fi
-  echo "results/paper/reversals.csv matches the run data"
+  for fig in fig5b fig5a; do
+    grep -qx "<!-- reversals $fig -->" "$paper/README.md" || continue
+    awk -v head="$fig:" '$0 == head { on = 1; next } /^fig[0-9a-z_]*:$/ { on = 0 } on' \
+      "$tmp/reversals.out" > "$tmp/reversals.$fig.md"
+    if ! section "$paper/README.md" "<!-- reversals $fig -->" "<!-- /reversals $fig -->" |
+      diff - "$tmp/reversals.$fig.md" > "$tmp/reversals.$fig.diff"; then
+      head -20 "$tmp/reversals.$fig.diff"
+      echo "results/paper/README.md: the sense-block table of $fig is not what the run data" \
+        "make: rerun bash results/paper/reversals.sh"
+      exit 1
+    fi
+  done
+  echo "results/paper/reversals.csv and the README's sense-block tables match the run data"
+fi
+# The README's comparison table and Fig. 5's curves (table.sh), remade from the analysis tables
+# on a copy of the README.
+if grep -qx "<!-- table -->" "$paper/README.md"; then
+  mkdir "$tmp/table"
+  cp "$paper/README.md" "$2/results/paper/table.sh" "$tmp/table/"
+  for dir in "$paper"/*/analysis; do
+    mkdir -p "$tmp/table/$(basename "$(dirname "$dir")")"
+    cp -r "$dir" "$tmp/table/$(basename "$(dirname "$dir")")/"
+  done
+  run "$tmp/table.log" bash "$tmp/table/table.sh"
+  if ! diff "$paper/README.md" "$tmp/table/README.md" > "$tmp/table.diff"; then
+    head -20 "$tmp/table.diff"
+    echo "results/paper/README.md: the comparison table or Fig. 5's curves are not what the" \
+      "analysis tables make: rerun bash results/paper/table.sh"
+    exit 1
+  fi
+  echo "results/paper/README.md: the comparison table and Fig. 5's curves match the tables"
 fi
 if [ "$checked" = 0 ]; then
   echo "no figure of results/paper has run data and tables yet"
