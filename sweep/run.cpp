@@ -207,8 +207,9 @@ RunOutcome run_scene(const Scene& scene, const std::string& out_path, std::ostre
         return out;  // status Running
       }
       if (threads && (window_steps >= ThreadGovernor::kWindowSteps || governor.lost(window_s))) {
-        // A window ends (or a probe has lost): time it (steps only, not the output), then pick
-        // the next window's threads (sweep/thread_governor.hpp).
+        // A window ends, or is cut short (a probe that has lost, a choice that slowed down): time
+        // it (steps only, not the output), then pick the next window's threads
+        // (sweep/thread_governor.hpp).
         governor.record(window_s / static_cast<double>(std::max(1L, window_steps)));
         window_steps = 0;
         window_s = 0;

@@ -16,6 +16,7 @@ int ThreadGovernor::next(int allowed) {
     wait_ = kFirstProbe;
     since_probe_ = 0;
     last_at_choice_ = -1;
+    ref_at_choice_ = -1;
   }
   if (allowed_ == 1) return window_threads_ = 1;
   // Probe the other choice once a window at the choice has been timed and the wait is over.
@@ -29,6 +30,11 @@ void ThreadGovernor::record(double seconds_per_step) {
   if (!probing_) {
     last_at_choice_ = seconds_per_step;
     ++since_probe_;
+    if (ref_at_choice_ <= 0) {
+      ref_at_choice_ = seconds_per_step;
+    } else if (seconds_per_step > kSlowdown * ref_at_choice_) {
+      since_probe_ = wait_;  // the machine changed under the choice: probe the other now
+    }
     return;
   }
   // The probe against the window just before it (adjacent windows: nearly the same state).
@@ -47,6 +53,7 @@ void ThreadGovernor::record(double seconds_per_step) {
   } else {
     wait_ = std::min(2 * wait_, kLongestWait);
   }
+  ref_at_choice_ = last_at_choice_;  // the choice as measured now
 }
 
 }  // namespace wirepack::sweep
