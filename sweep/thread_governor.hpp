@@ -31,7 +31,7 @@ class ThreadGovernor {
   static constexpr int kLongestWait = 512;  // the probe interval stops doubling here [windows]
   static constexpr double kMargin = 0.9;    // more threads are taken when < 90 % of 1's time
   static constexpr double kKeep = 0.95;     // and kept while < 95 % of it (else given back)
-  static constexpr double kSlowdown = 1.5;  // a window at the choice this much slower: probe now
+  static constexpr double kSlowdown = 2.0;  // a window at the choice this much slower: probe now
 
   // Threads for the next window, given how many are allowed now (>= 1).
   int next(int allowed);

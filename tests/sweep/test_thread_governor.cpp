@@ -105,9 +105,9 @@ TEST(ThreadGovernor, ProbesAtOnceWhenTheChoiceSlowsDown) {
   ASSERT_EQ(h.choice(), 2);
   EXPECT_EQ(h.next(2), 2);
   const double window = ThreadGovernor::kWindowSteps * 0.6e-3;
-  EXPECT_FALSE(h.lost(1.4 * window));
-  EXPECT_TRUE(h.lost(1.6 * window));
-  h.record(1.6 * window / 5);  // cut after 5 steps
+  EXPECT_FALSE(h.lost(1.9 * window));
+  EXPECT_TRUE(h.lost(2.1 * window));
+  h.record(2.1 * window / 5);  // cut after 5 steps
   EXPECT_EQ(h.next(2), 1);
 }
 
