@@ -17,6 +17,12 @@
 #                                                  default) with SIGTERM: each run going writes its
 #                                                  checkpoint at once; waits until they are gone
 #   bash results/paper/make.sh analyze [FIG...]    tables and plots from FIG/sweep into FIG/analysis
+#   bash results/paper/make.sh cost [FIG...]       what FIG's complete runs cost: each run file's
+#                                                  last wall_s (all sittings of a resumed run) and
+#                                                  steps; min, median, mean, max, core-hours, and
+#                                                  the figure's wall time on 2 and on 16 cores
+#                                                  (core-hours over the cores, at least the
+#                                                  longest run); runs nothing
 #   bash results/paper/make.sh pictures FIG [last] every snapshot of FIG's runs drawn by wirepack
 #                                                  render (ParaView; wire at half its radius,
 #                                                  coloured by kappa R) into FIG/pictures; with
@@ -163,6 +169,28 @@ analyze() {  # FIG
   "$wp" analyze "$here/$f/sweep" --out "$here/$f/analysis"
 }
 
+cost() {  # FIG: the wall time and steps of its complete runs, from the run files
+  local f=$1 csv run
+  [ -d "$here/$f/sweep/runs" ] || { echo "== $f: no run data yet"; return 0; }
+  csv=$(mktemp)
+  for run in "$here/$f"/sweep/runs/*.h5; do
+    [ -f "$run" ] || continue
+    "$wp" export "$run" --csv "$csv" > /dev/null
+    # The last row's wall_s [s] and steps, found by their column names.
+    awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) col[$i] = i }
+      END { print $col["wall_s"], $col["steps"] }' "$csv"
+  done | sort -g | awk -v f="$f" '{ w[++n] = $1; s += $1; st += $2 }
+    END {
+      if (n == 0) { print "== " f ": no complete run"; exit }
+      m = (n % 2) ? w[(n + 1) / 2] : (w[n / 2] + w[n / 2 + 1]) / 2
+      h = s / 3600
+      t2 = h / 2; if (t2 < w[n] / 3600) t2 = w[n] / 3600
+      t16 = h / 16; if (t16 < w[n] / 3600) t16 = w[n] / 3600
+      printf "== %s: %d runs, wall per run %.0f-%.0f s, median %.0f s, mean %.0f s, %.0f k steps on average; %.1f core-hours: >= %.1f h on 2 cores, >= %.1f h on 16\n",
+        f, n, w[1], w[n], m, s / n, st / n / 1000, h, t2, t16 }'
+  rm -f "$csv"
+}
+
 pictures() {  # FIG [last]
   local f=$1 which=${2:-all}
   [ -d "$here/$f/sweep/runs" ] || { echo "== $f: no run data yet"; return 0; }
@@ -193,13 +221,17 @@ case "$cmd" in
     shift
     for f in "${@:-${figs[@]}}"; do analyze "$f"; done
     ;;
+  cost)
+    shift
+    for f in "${@:-${figs[@]}}"; do cost "$f"; done
+    ;;
   pictures)
     [ $# -ge 2 ] && { [ $# -eq 2 ] || [ "$3" = last ]; } ||
       { echo "usage: make.sh pictures FIG [last]" >&2; exit 2; }
     pictures "$2" "${3:-all}"
     ;;
   *)
-    echo "usage: make.sh status | run FIG[,FIG...] [THREADS] | stop [FIG...] | analyze [FIG...] | pictures FIG [last]" >&2
+    echo "usage: make.sh status | run FIG[,FIG...] [THREADS] | stop [FIG...] | analyze [FIG...] | cost [FIG...] | pictures FIG [last]" >&2
     exit 2
     ;;
 esac
