@@ -42,7 +42,7 @@ expected_files() {  # FIG -> the run files its sweep file asks for, one per line
 
 status() {
   local total_done=0 total=0
-  printf '%-7s %5s %5s %6s %8s %11s  %s\n' figure done left failed partial "left [CPU h]" \
+  printf '%-7s %5s %5s %6s %8s %11s  %s\n' figure "done" left failed partial "left [CPU h]" \
     "run data"
   for f in "${figs[@]}"; do
     local n=0 done=0 failed=0 partial=0
