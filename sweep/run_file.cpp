@@ -10,14 +10,12 @@
 #include <filesystem>
 
 #include "sweep/hdf5_handle.hpp"
+#include "wirepack_git.hpp"  // WIREPACK_GIT, written at build time (cmake/git_hash.cmake)
 
 namespace wirepack::sweep {
 
 #ifndef WIREPACK_VERSION
 #define WIREPACK_VERSION "unknown"
-#endif
-#ifndef WIREPACK_GIT
-#define WIREPACK_GIT "unknown"
 #endif
 
 std::string build_version() {

@@ -2,6 +2,7 @@
 // on bad input, a short real run and its export.
 #include <sys/wait.h>
 
+#include <cctype>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -143,6 +144,26 @@ TEST(Cli, Schema) {
   const Result r = wirepack(dir, "schema");
   ASSERT_EQ(r.code, 0);
   EXPECT_NE(r.out.find("| `/rho` | number | required | > 2 |"), std::string::npos) << r.out;
+}
+
+// Run files and manifests are stamped with build_git(), the commit the binary was built from
+// (with "-dirty" when its sources differ from it): read at build time, so a build after new
+// commits names the new HEAD and not the commit of the last cmake configure.
+TEST(Cli, VersionNamesTheCommitItWasBuiltFrom) {
+  TempDir dir;
+  const int git = std::system(("git -C '" WIREPACK_SOURCE_DIR "' rev-parse --short=12 HEAD >'" +
+                               (dir / "head") + "' 2>/dev/null")
+                                  .c_str());
+  if (!WIFEXITED(git) || WEXITSTATUS(git) != 0) GTEST_SKIP() << "the sources are no git checkout";
+  std::string head = read_text(dir / "head");
+  while (!head.empty() && std::isspace(static_cast<unsigned char>(head.back()))) head.pop_back();
+  ASSERT_EQ(head.size(), 12u) << head;
+  const Result r = wirepack(dir, "--version");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const bool clean = r.out.find("(" + head + ")") != std::string::npos;
+  const bool dirty = r.out.find("(" + head + "-dirty)") != std::string::npos;
+  EXPECT_TRUE(clean || dirty) << "wirepack --version: " << r.out << "HEAD: " << head;
+  EXPECT_EQ(sweep::build_git(), head + (dirty ? "-dirty" : ""));
 }
 
 TEST(Cli, ShortRunAndExport) {
