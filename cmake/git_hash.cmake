@@ -4,6 +4,7 @@
 # build (target wirepack_git); OUT is rewritten only when its text changes, so a build with the
 # same hash recompiles nothing.
 #   cmake -DSOURCE_DIR=... -DOUT=... -P cmake/git_hash.cmake
+set(ENV{GIT_OPTIONAL_LOCKS} 0)  # git status must not take the index lock from a concurrent git
 execute_process(COMMAND git rev-parse --short=12 HEAD WORKING_DIRECTORY "${SOURCE_DIR}"
                 OUTPUT_VARIABLE hash OUTPUT_STRIP_TRAILING_WHITESPACE ERROR_QUIET
                 RESULT_VARIABLE rc)
