@@ -29,6 +29,18 @@ MeanSem mean_sem(std::span<const double> xs) {
   return r;
 }
 
+std::size_t distinct_outcomes(std::span<const double> xs, double gap) {
+  std::vector<double> v;
+  for (double x : xs)
+    if (!std::isnan(x)) v.push_back(x);
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  std::size_t n = 1;
+  for (std::size_t i = 1; i < v.size(); ++i)
+    if (v[i] - v[i - 1] > gap) ++n;
+  return n;
+}
+
 namespace {
 
 // Accepted point of a power-law fit: in the window, finite, and both coordinates positive.

@@ -23,6 +23,11 @@ struct MeanSem {
 // kept and propagates). n = 1 gives the mean with sd, sem NaN; n = 0 gives all NaN.
 MeanSem mean_sem(std::span<const double> xs);
 
+// Distinct outcomes among the non-NaN entries of xs (e.g. one statistic over the seeds of a grid
+// point): sorted, a new outcome starts wherever two neighbours differ by more than gap. Ten seeds
+// that follow one trajectory give 1, ten independent ones up to 10; 0 for no entries.
+std::size_t distinct_outcomes(std::span<const double> xs, double gap = 0.01);
+
 struct PowerLawFit {
   double exponent = NaN;              // p in y = exp(log_prefactor) l^p
   double stderr_ = NaN;               // standard error of p (OLS, n - 2 dof)

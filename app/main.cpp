@@ -3,6 +3,7 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <csignal>
@@ -17,6 +18,7 @@
 #include "report/accuracy.hpp"
 #include "report/analyze.hpp"
 #include "report/refine.hpp"
+#include "report/twin.hpp"
 #include "sweep/atomic_file.hpp"
 #include "sweep/errors.hpp"
 #include "sweep/export.hpp"
@@ -302,6 +304,32 @@ int cmd_export(const std::string& run_file, const std::string& csv, const std::s
   return kOk;
 }
 
+// Twin runs: the snapshot-by-snapshot separation modulo the rotation about the feed axis, and
+// the l where it first exceeds the threshold (in r). Prints one line; --csv writes the rows.
+int cmd_twin(const std::string& a, const std::string& b, double threshold_r,
+             const std::string& csv) {
+  try {
+    if (!csv.empty()) check_output_path(csv);
+    const TwinComparison c =
+        compare_twins(read_run_for_export(a), read_run_for_export(b), threshold_r);
+    if (!csv.empty()) write_file_atomic(csv, twin_csv(c));
+    const auto top = std::max_element(c.separation_r.begin(), c.separation_r.end());
+    std::cout << "snapshots compared: " << c.l.size() << " (l <= " << format_number(c.l.back())
+              << "); ";
+    if (std::isnan(c.parting_l))
+      std::cout << "never parted by more than " << format_number(threshold_r) << " r (largest "
+                << format_number(*top) << " r)\n";
+    else
+      std::cout << "parted by more than " << format_number(threshold_r)
+                << " r at l = " << format_number(c.parting_l) << "\n";
+  } catch (const RunFileError& e) {
+    throw InputError(e.what());
+  } catch (const WriteError& e) {
+    throw InputError(e.what());
+  }
+  return kOk;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -465,6 +493,19 @@ int main(int argc, char** argv) {
                   "snapshot of --profile, from 0; negative counts from the end (default -1, the "
                   "last)");
 
+  std::string twin_a, twin_b, twin_csv_path;
+  double twin_threshold = 1.0;
+  auto* twin = app.add_subcommand(
+      "twin",
+      "compare twin runs (one scene, perturbations differing by a tiny perturbation/offset): "
+      "where their wires part, modulo a rotation about the feed axis");
+  twin->add_option("run_a", twin_a, "run file (HDF5) or checkpoint")->required();
+  twin->add_option("run_b", twin_b, "its twin")->required();
+  twin->add_option("--threshold", twin_threshold,
+                   "separation that counts as parted, in wire radii r (default 1)")
+      ->check(CLI::PositiveNumber);
+  twin->add_option("--csv", twin_csv_path, "write l and the separation / r per snapshot");
+
   wirepack::app::RenderOptions render_opt;
   auto* render = app.add_subcommand(
       "render",
@@ -527,6 +568,7 @@ int main(int argc, char** argv) {
     }
     if (*exp) return cmd_export(run_file, csv_path, xmf_path, profile_path, profile_snapshot);
     if (*render) return cmd_render(render_opt);
+    if (*twin) return cmd_twin(twin_a, twin_b, twin_threshold, twin_csv_path);
     if (*schema) {
       std::cout << schema_markdown();
       return kOk;

@@ -33,6 +33,7 @@ RodState Feeder::initial_state() const {
       const double s_rel = (x[2] - z_hole_) / L0_;
       x[0] += p_.deflection * s_rel * s_rel * gauss(rng);
       x[1] += p_.deflection * s_rel * s_rel * gauss(rng);
+      if (p_.offset != 0.0) x[0] += p_.offset * s_rel * s_rel;
     }
     s.x.push_back(x);
   }

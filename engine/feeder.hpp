@@ -28,6 +28,7 @@ struct FeederParams {
   int guide_nodes = 3;        // kinematic nodes kept outside the hole
   double deflection = 0;      // rms transverse deflection of the initial inside nodes [m]
   double release_noise = 0;   // rms transverse offset given to each released node [m]
+  double offset = 0;          // fixed x offset of the initial tip (s_rel^2 shape; twins) [m]
   std::uint64_t seed = 1;
   bool twist = false;      // create twist DOFs
   bool spin_free = false;  // swivel at the hole (FeederSpin::Free): see release()

@@ -18,6 +18,12 @@ enum class MassScaling { Uniform, Selective };
 // against it); Free, a swivel: the wire may spin about its axis at the hole and no twisting
 // moment is transmitted there. Acts only with twist DOFs.
 enum class FeederSpin { Held, Free };
+// What the wire's viscous drag acts on (integrate/damping.hpp): Relative, the transverse part of
+// each node's velocity (sliding along the wire's own axis is free) plus dashpots on relative
+// motion; Absolute, the whole velocity of every node and the spin of every edge (mass-
+// proportional damping, C = gamma M_physical: the injected wire sliding along itself is
+// dragged too), the same dashpots beside it.
+enum class DampingForm { Relative, Absolute };
 
 struct WireParams {
   double radius = 0.5e-3;            // r [m]
@@ -33,6 +39,7 @@ struct NumericsParams {
   MassScaling mass_scaling = MassScaling::Selective;
   double tolerance = 1e-3;      // local position error per step, in units of r [-]
   double damping_ratio = 0.05;  // subcritical damping ratio zeta [-]
+  DampingForm damping_form = DampingForm::Relative;
   EffectMode twist = EffectMode::Auto;
   EffectMode shell_self_contact = EffectMode::Auto;  // needs an elastic shell
   // The shell's vertex masses are those of thickness max(t, min(c r, t rho_w / rho_s)), c this
@@ -54,6 +61,13 @@ struct SceneParams {
   FeederSpin feeder_spin = FeederSpin::Held;
   // k_t / k_n of a sticking contact; 0: Mindlin's 2 (1 - nu_w) / (2 - nu_w) [-].
   double friction_stiffness_ratio = 0.0;
+  // The imperfections that break the symmetry about the feed axis (feeder.hpp), in units of r:
+  // rms tip deflection of the initial wire, rms offset of each released node, and a fixed
+  // offset of the initial wire along x (s_rel^2 shape; 0 by default): two runs of one seed whose
+  // offsets differ by 1e-6 are twins for the decorrelation diagnostic.
+  double perturbation_deflection = 0.05;
+  double perturbation_release_noise = 1e-3;
+  double perturbation_offset = 0.0;
   WireParams wire;
   NumericsParams numerics;
 

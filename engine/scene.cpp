@@ -55,6 +55,8 @@ Assembly assemble(const SceneParams& p) {
   // Damping (see integrate/damping.hpp); the transverse rate refers to the slow modes' mass.
   const double omega0 = std::sqrt(m.EI() / (rho_slow * m.A * std::pow(R, 4)));
   a.damping.c_transverse = 2.0 * zeta * omega0 * m_slow;
+  a.damping.absolute = p.numerics.damping_form == DampingForm::Absolute;
+  if (a.damping.absolute) a.damping.c_spin = 2.0 * zeta * omega0 * I_slow;
   a.damping.eta_axial = zeta * std::sqrt(2.0 * m.EA() / ell * a.inertia.node_mass);
   a.damping.eta_twist = zeta * std::sqrt(2.0 * m.GJ() / ell * a.inertia.edge_twist_inertia);
   // Bending-rate dashpot (selective mass): the zig-zag mode (mass m_s, Laplacian eigenvalue 4,
@@ -72,8 +74,9 @@ Assembly assemble(const SceneParams& p) {
   a.feeder.hole_radius = (1.0 + SceneConstants::kHoleClearance) * r;
   a.feeder.element_length = ell;
   a.feeder.speed = v;
-  a.feeder.deflection = SceneConstants::kDeflection * r;
-  a.feeder.release_noise = SceneConstants::kReleaseNoise * r;
+  a.feeder.deflection = p.perturbation_deflection * r;
+  a.feeder.release_noise = p.perturbation_release_noise * r;
+  a.feeder.offset = p.perturbation_offset * r;
   a.feeder.seed = p.seed;
   a.feeder.twist = twist;
   a.feeder.spin_free = twist && p.feeder_spin == FeederSpin::Free;

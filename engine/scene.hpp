@@ -23,8 +23,6 @@ namespace wirepack {
 // Numerical constants of ours (documented in the README).
 struct SceneConstants {
   static constexpr double kHoleClearance = 0.1;  // hole radius r_h = (1 + 0.1) r
-  static constexpr double kDeflection = 0.05;    // initial rms deflection of the tip / r
-  static constexpr double kReleaseNoise = 1e-3;  // rms offset of each released node / r
   static constexpr double kSkin = 0.5;           // Verlet skin of the self-contact list / r
   // Verlet skin of the shell's own contact list / r. Its rebuild scans every mesh edge and face
   // (most pairs then excluded as rest neighbours) while its candidates are only folded pieces,

@@ -86,7 +86,8 @@ std::string view_csv(const Analysis& a, const View& v) {
   for (const auto& o : v.others) header.push_back(column_name(o));
   header.push_back(v.name);
   for (const char* h : {"n", "D_mean", "D_sem", "D_l_min", "D_l_max", "D_chord_mean", "D_chord_sem",
-                        "D_kappa_mean", "D_kappa_sem"})
+                        "D_kappa_mean", "D_kappa_sem", "D_sd", "D_chord_sd", "D_kappa_sd",
+                        "D_distinct", "D_chord_distinct", "D_kappa_distinct"})
     header.push_back(h);
   Table t(header);
   for (const std::size_t i : v.order) {
@@ -100,6 +101,12 @@ std::string view_csv(const Analysis& a, const View& v) {
     row.push_back(num(a.settings.D_window.l_max));
     for (const auto field : {&RunData::D_chord, &RunData::D_kappa})
       for (auto& c : mean_sem_cells(values(p, field))) row.push_back(std::move(c));
+    // Decorrelation of the seeds: the spread (SD) and the distinct outcomes (values more than
+    // 0.01 apart) of each variant; ten seeds of one trajectory give SD ~ 0 and one outcome.
+    const auto variants = {&RunData::D, &RunData::D_chord, &RunData::D_kappa};
+    for (const auto field : variants) row.push_back(num(analysis::mean_sem(values(p, field)).sd));
+    for (const auto field : variants)
+      row.push_back(std::to_string(analysis::distinct_outcomes(values(p, field))));
     t.add(row);
   }
   return t.text();

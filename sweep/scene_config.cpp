@@ -244,6 +244,7 @@ Scene parse_scene(const json& j, const std::string& source) {
   }
   fill("/numerics/quasistatic_ratio", ps.quasistatic_ratio);
   fill("/numerics/tolerance", ps.tolerance);
+  if (!given.contains("/numerics/mass_scaling")) values["/numerics/mass_scaling"] = ps.mass_scaling;
   if (has("/mu_s") && has("/mu_d") && get("/mu_d") > get("/mu_s"))
     val.fail("/mu_d", "must be <= mu_s = " + format_number(get("/mu_s")) + " (got " +
                           format_number(get("/mu_d")) + ")");
@@ -279,6 +280,20 @@ Scene parse_scene(const json& j, const std::string& source) {
   // friction_stiffness_ratio came after runs existed: resolved only where given and acting
   // (friction on); absent, the engine uses Mindlin's ratio as before.
   if (e.mu_s == 0.0) scene.resolved.erase("friction_stiffness_ratio");
+  // The perturbation keys came after runs existed: resolved only where not their defaults.
+  if (e.perturbation_deflection == 0.05 && e.perturbation_release_noise == 1e-3 &&
+      e.perturbation_offset == 0.0)
+    scene.resolved.erase("perturbation");
+  else
+    for (const auto& [key, dflt] : {std::pair<const char*, double>{"deflection", 0.05},
+                                    {"release_noise", 1e-3},
+                                    {"offset", 0.0}})
+      if (scene.resolved["perturbation"][key].get<double>() == dflt)
+        scene.resolved["perturbation"].erase(key);
+  // damping_form came after runs existed: resolved only where it is "absolute", so the runs of
+  // the relative form keep their ids.
+  if (e.numerics.damping_form == DampingForm::Relative)
+    scene.resolved["/numerics"_json_pointer].erase("damping_form");
   scene.numerics_preset = preset;
   return scene;
 }

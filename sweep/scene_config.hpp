@@ -30,12 +30,13 @@ struct Scene {
 // these four defaults; keys given beside "preset" override them. Not part of the resolved
 // scene (a run's identity is its resolved values, so "default" and no preset are one run).
 struct NumericsPreset {
-  std::string name;          // "fast" | "default" | "accurate"
-  double element_per_r;      // element_length / wire radius [-]
-  double mesh_per_r;         // shell_mesh_size / wire radius [-]
-  double quasistatic_ratio;  // [-]
-  double tolerance;          // [r]
-  std::string summary;       // what it buys, from the accuracy-vs-time study
+  std::string name;                        // "fast" | "default" | "accurate" | "inertial"
+  double element_per_r;                    // element_length / wire radius [-]
+  double mesh_per_r;                       // shell_mesh_size / wire radius [-]
+  double quasistatic_ratio;                // [-]
+  double tolerance;                        // [r]
+  std::string summary;                     // what it buys, from the accuracy-vs-time study
+  std::string mass_scaling = "selective";  // numerics/mass_scaling unless given
 };
 const std::vector<NumericsPreset>& numerics_presets();
 // The preset called `name`, or nullptr.

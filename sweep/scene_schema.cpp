@@ -106,6 +106,29 @@ const std::vector<KeySpec>& scene_schema() {
        .doc = "k_t / k_n: tangential over normal stiffness of a sticking contact (every "
               "contact type); acts only with friction",
        .apply = [](Scene& s, const json& v) { s.engine.friction_stiffness_ratio = num(v); }},
+      {.pointer = "/perturbation/deflection",
+       .type = Type::Number,
+       .need = Need::Optional,
+       .fallback = 0.05,
+       .min = Bound{0, true},
+       .doc = "rms transverse deflection of the initial wire's tip, in r (resolved where not "
+              "0.05) [-]",
+       .apply = [](Scene& s, const json& v) { s.engine.perturbation_deflection = num(v); }},
+      {.pointer = "/perturbation/release_noise",
+       .type = Type::Number,
+       .need = Need::Optional,
+       .fallback = 1e-3,
+       .min = Bound{0, true},
+       .doc = "rms transverse offset of each node released through the hole, in r (resolved "
+              "where not 1e-3) [-]",
+       .apply = [](Scene& s, const json& v) { s.engine.perturbation_release_noise = num(v); }},
+      {.pointer = "/perturbation/offset",
+       .type = Type::Number,
+       .need = Need::Optional,
+       .fallback = 0.0,
+       .doc = "fixed x offset of the initial wire's tip, in r (quadratic from the hole): twin "
+              "runs of one seed differ by it (resolved where not 0) [-]",
+       .apply = [](Scene& s, const json& v) { s.engine.perturbation_offset = num(v); }},
       {.pointer = "/wire/radius",
        .type = Type::Number,
        .need = Need::Optional,
@@ -189,6 +212,20 @@ const std::vector<KeySpec>& scene_schema() {
        .max = Bound{1, false},
        .doc = "viscous damping ratio zeta, subcritical [-]",
        .apply = [](Scene& s, const json& v) { s.engine.numerics.damping_ratio = num(v); }},
+      {.pointer = "/numerics/damping_form",
+       .type = Type::Choice,
+       .need = Need::Optional,
+       .fallback = "relative",
+       .choices = {"relative", "absolute"},
+       .doc = "what the wire's viscous drag acts on: relative, the transverse velocity only "
+              "(sliding along the wire is free); absolute, the whole velocity and spin "
+              "(mass-proportional damping: the wire sliding in is dragged too) (resolved where "
+              "given as absolute)",
+       .apply =
+           [](Scene& s, const json& v) {
+             s.engine.numerics.damping_form =
+                 v == "absolute" ? DampingForm::Absolute : DampingForm::Relative;
+           }},
       {.pointer = "/numerics/twist",
        .type = Type::Choice,
        .need = Need::Optional,
@@ -249,6 +286,12 @@ const std::vector<NumericsPreset>& numerics_presets() {
       {"fast", 2.0, 4.0, 0.02, 1e-3, "quick looks and broad scans"},
       {"default", 1.0, 2.0, 0.01, 1e-3, "production nights"},
       {"accurate", 0.5, 1.0, 0.003, 3e-5, "convergence checks and references"},
+      // Engine VI (results/crumpling): every mode at the scaled mass, ~350x the physical inertia
+      // of the wire sliding in; the paper's crumpled phase at l <= 50 and independent seeds.
+      {"inertial", 1.0, 2.0, 0.01, 1e-3,
+       "the paper's crumpled phase: uniform mass scaling (every mode ~350x the physical "
+       "inertia; results/crumpling)",
+       "uniform"},
   };
   return table;
 }
@@ -316,12 +359,13 @@ std::string schema_markdown() {
          "numerics keys, which override it; default \"default\"; `wirepack validate` prints the "
          "one "
          "used, and section \"Accuracy and presets\" what each costs and buys):\n\n";
-  out << "| preset | element_length | shell_mesh_size | quasistatic_ratio | tolerance | use |\n";
-  out << "| --- | --- | --- | --- | --- | --- |\n";
+  out << "| preset | element_length | shell_mesh_size | quasistatic_ratio | tolerance | "
+         "mass_scaling | use |\n";
+  out << "| --- | --- | --- | --- | --- | --- | --- |\n";
   for (const auto& p : numerics_presets())
     out << "| `" << p.name << "` | " << format_number(p.element_per_r) << " r | "
         << format_number(p.mesh_per_r) << " r | " << format_number(p.quasistatic_ratio) << " | "
-        << format_number(p.tolerance) << " | " << p.summary << " |\n";
+        << format_number(p.tolerance) << " | " << p.mass_scaling << " | " << p.summary << " |\n";
   return out.str();
 }
 

@@ -20,12 +20,12 @@ void RodDamping::add_forces(const RodState& s, RodForces& out) const {
     const Vec3 fa = (p_.eta_axial * rate) * t;
     out.f[j] += fa;
     out.f[j + 1] -= fa;
-    // Transverse damping of node j about its tangent tau_j.
+    // Transverse damping of node j about its tangent tau_j (absolute form: the whole v_j).
     const Vec3 tau = j == 0 ? t : (t_prev + t).normalized();
     tau_[j] = tau;
     const Vec3& v = s.v[j];
     const double m_gamma = p_.c_transverse;
-    out.f[j] -= m_gamma * (v - v.dot(tau) * tau);
+    out.f[j] -= p_.absolute ? Vec3(m_gamma * v) : Vec3(m_gamma * (v - v.dot(tau) * tau));
     t_prev = t;
   }
   if (p_.eta_bending > 0.0) {
@@ -43,6 +43,10 @@ void RodDamping::add_forces(const RodState& s, RodForces& out) const {
   }
   if (!s.has_twist()) return;
   const int end = twist_end_node(s, p_.twist_free_at_guide);  // the same nodes as the twist sum
+  if (p_.absolute) {
+    // Spin drag of every dynamic edge (j + 1 < n_free): -gamma I_theta omega_j [N m].
+    for (int j = 0; j + 1 < nf; ++j) out.torque[j] -= p_.c_spin * s.omega[j];
+  }
   for (int i = 1; i < end; ++i) {
     const double rel = s.omega[i] - s.omega[i - 1];
     out.torque[i] -= p_.eta_twist * rel;

@@ -5,6 +5,10 @@
 //    wire sliding along its own axis (as it does when fed into a coil) feels no drag, while
 //    sideways motion is damped at gamma = 2 zeta omega_0, omega_0 = sqrt(E I / (rho A R^4)) the
 //    bending frequency scale of a wire curved on the cavity radius;
+//  - absolute (DampingForm::Absolute, instead of the transverse part): F_i = -gamma m v_i and
+//    a spin drag -gamma I_theta omega_e on every edge: mass-proportional damping of the whole
+//    motion. The wire sliding into the cavity at the feed speed v is dragged by gamma m v per
+//    node, a compressive load gamma rho A v L at the hole that grows with the injected length L;
 //  - axial: a dashpot on the stretch rate of every edge, eta = zeta sqrt(2 k m), k = E A / l,
 //    i.e. ratio zeta for the highest axial mode;
 //  - twist: a dashpot on the relative spin of neighbouring edges, same rule with G J / l, I_theta;
@@ -24,6 +28,8 @@ namespace wirepack {
 
 struct DampingParams {
   double c_transverse = 0;           // gamma m per node [N s/m]
+  bool absolute = false;             // drag on the whole velocity (DampingForm::Absolute)
+  double c_spin = 0;                 // gamma I_theta per edge, absolute form only [N m s]
   double eta_axial = 0;              // [N s/m]
   double eta_twist = 0;              // [N m s]
   double eta_bending = 0;            // eta of the bending-rate dashpot [N s/m]

@@ -36,6 +36,32 @@ TEST(MeanSem, NaNsAreSkipped) {
   EXPECT_DOUBLE_EQ(m.sem, std::sqrt(5.0 / 3.0) / 2);
 }
 
+// ----------------------------------------------------------------------------------------------
+// distinct_outcomes
+
+TEST(DistinctOutcomes, OneTrajectoryIsOneOutcome) {
+  // Ten seeds of one reproducible path: Fig. 5b's mu_s = 1 before Engine VI, 0.0238290 +- 3e-7.
+  std::vector<double> xs;
+  for (int k = 0; k < 10; ++k) xs.push_back(0.0238290 + 3e-7 * ((k * 7) % 5 - 2));
+  EXPECT_EQ(distinct_outcomes(xs), 1u);
+}
+
+TEST(DistinctOutcomes, IndependentSeedsAreTenOutcomes) {
+  // Ten well separated values (0.05 apart, in shuffled order): ten outcomes.
+  const std::vector<double> xs{0.35, 0.05, 0.45, 0.1, 0.3, 0.2, 0.5, 0.15, 0.4, 0.25};
+  EXPECT_EQ(distinct_outcomes(xs), 10u);
+}
+
+TEST(DistinctOutcomes, GapIsBetweenSortedNeighboursAndNaNsAreSkipped) {
+  // 0.6, 0.605, 0.62 | 0.9: the first three chain (0.005 and 0.015 > 0.01 splits), so
+  // {0.6, 0.605}, {0.62}, {0.9} are three outcomes; NaNs are not outcomes.
+  const std::vector<double> xs{0.62, NaN, 0.6, 0.9, 0.605, NaN};
+  EXPECT_EQ(distinct_outcomes(xs), 3u);
+  EXPECT_EQ(distinct_outcomes(xs, 0.5), 1u);
+  EXPECT_EQ(distinct_outcomes(std::vector<double>{NaN}), 0u);
+  EXPECT_EQ(distinct_outcomes(std::vector<double>{}), 0u);
+}
+
 TEST(MeanSem, SingleValueHasNoSpread) {
   const std::vector<double> xs{NaN, 7.25};
   const MeanSem m = mean_sem(xs);

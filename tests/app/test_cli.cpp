@@ -202,6 +202,45 @@ TEST(Cli, ShortRunAndExport) {
   EXPECT_FALSE(fs::exists(dir / "p2.csv"));
 }
 
+// Twin runs end to end: the same seed twice gives one trajectory (never parts, separation 0);
+// a run and its twin with perturbation/offset 1e-6 compare snapshot by snapshot; a file that is
+// no run file is bad input and writes nothing.
+TEST(Cli, TwinComparesTwoRunsModuloTheFeedAxisRotation) {
+  TempDir dir;
+  const std::string scene = R"({"rho": 10, "mu_s": 0.5, "shell": "rigid", "l_max": 1.5,
+                                "numerics": {"element_length": 1e-3},
+                                "output": {"snapshots_every_l": 0.5}})";
+  dir.write("a.json", scene);
+  std::string twin = scene;
+  twin.replace(twin.rfind('}'), 1, R"(, "perturbation": {"offset": 1e-6}})");
+  dir.write("b.json", twin);
+  ASSERT_EQ(wirepack(dir, "run a.json --out a.h5").code, 0);
+  ASSERT_EQ(wirepack(dir, "run a.json --out a2.h5").code, 0);
+  ASSERT_EQ(wirepack(dir, "run b.json --out b.h5").code, 0);
+  const Result same = wirepack(dir, "twin a.h5 a2.h5 --csv same.csv");
+  ASSERT_EQ(same.code, 0) << same.err;
+  EXPECT_NE(same.out.find("snapshots compared: 3 (l <= 1.5"), std::string::npos) << same.out;
+  EXPECT_NE(same.out.find("never parted by more than 1 r (largest 0 r)"), std::string::npos)
+      << same.out;
+  const std::string rows = read_text(dir / "same.csv");
+  EXPECT_EQ(rows.rfind("l,separation_r\n0.5", 0), 0u) << rows;
+  EXPECT_NE(rows.find(",0\n"), std::string::npos) << rows;
+  const Result ab = wirepack(dir, "twin a.h5 b.h5");
+  ASSERT_EQ(ab.code, 0) << ab.err;
+  // The 1e-6 r offset is still of its own size at l = 1.5 (a rigid scene that has barely
+  // begun to buckle): never parted, the largest separation a few 1e-6 r.
+  EXPECT_NE(ab.out.find("snapshots compared: 3"), std::string::npos) << ab.out;
+  const auto at = ab.out.find("(largest ");
+  ASSERT_NE(at, std::string::npos) << ab.out;
+  const double largest = std::stod(ab.out.substr(at + 9));
+  EXPECT_GT(largest, 1e-7);
+  EXPECT_LT(largest, 1e-4);
+  dir.write("not_a_run.h5", "text");
+  const Result bad = wirepack(dir, "twin a.h5 not_a_run.h5 --csv bad.csv");
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_FALSE(fs::exists(dir / "bad.csv"));
+}
+
 TEST(Cli, FailedRunExit1) {
   TempDir dir;
   // Forces overflow a double, so the engine stops with a non-finite state.

@@ -222,12 +222,22 @@ TEST_F(Analyze, CurvesGroupSeedsWithExactMeanAndSem) {
   const Csv v = read_csv(out("D_vs_mu_s.csv"));
   EXPECT_EQ(v.header,
             "mu_s,n,D_mean,D_sem,D_l_min,D_l_max,D_chord_mean,D_chord_sem,D_kappa_mean,"
-            "D_kappa_sem");
+            "D_kappa_sem,D_sd,D_chord_sd,D_kappa_sd,D_distinct,D_chord_distinct,D_kappa_distinct");
   // The variants are maximised over the window like D: D_chord = D / 2, D_kappa = 1 - |0|.
   EXPECT_NEAR(d(v.rows[1].at("D_chord_mean")), 0.5 * d(p1.at("D_mean")), 1e-15);
   EXPECT_NEAR(d(v.rows[1].at("D_chord_sem")), 0.5 * d(p1.at("D_sem")), 1e-15);
   EXPECT_EQ(v.rows[1].at("D_kappa_mean"), "1");
   EXPECT_EQ(v.rows[1].at("D_kappa_sem"), "0");
+  // Seed spread and distinct outcomes: D = 0.2, 0.3, 0.7 (three outcomes, SD sqrt(0.07)) and
+  // 0.5, 0.9 (two, SD sqrt(0.08)); D_kappa = 1 in both seeds of mu_s = 0.5: one outcome, SD 0.
+  EXPECT_NEAR(d(v.rows[0].at("D_sd")), std::sqrt(0.07), 1e-15);
+  EXPECT_NEAR(d(v.rows[1].at("D_sd")), std::sqrt(0.08), 1e-15);
+  EXPECT_NEAR(d(v.rows[1].at("D_chord_sd")), 0.5 * std::sqrt(0.08), 1e-15);
+  EXPECT_EQ(v.rows[0].at("D_distinct"), "3");
+  EXPECT_EQ(v.rows[1].at("D_distinct"), "2");
+  EXPECT_EQ(v.rows[1].at("D_chord_distinct"), "2");
+  EXPECT_EQ(v.rows[1].at("D_kappa_sd"), "0");
+  EXPECT_EQ(v.rows[1].at("D_kappa_distinct"), "1");
   ASSERT_EQ(v.rows.size(), 2u);
   EXPECT_EQ(v.rows[1].at("mu_s"), "0.5");
   EXPECT_EQ(v.rows[1].at("D_mean"), p1.at("D_mean"));

@@ -72,11 +72,13 @@ TEST(SceneConfig, DefaultsFilled) {
   // The resolved JSON has every key of the schema, each a valid value, except the one added
   // after runs existed whose default leaves them unchanged in physics, bitwise, wherever it is
   // not resolved (shell_inertia_thickness: resolved where it acts, on thin soft shells, t < r
-  // and eps > 350; SceneConfig.ShellInertiaResolvedWhereItActs), so no such run's id moves.
+  // and eps > 350; SceneConfig.ShellInertiaResolvedWhereItActs; damping_form and the
+  // perturbation keys: where not their defaults), so no such run's id moves.
   for (const auto& spec : scene_schema()) {
-    const bool neutral = spec.pointer == "/numerics/shell_inertia_thickness" ||
-                         spec.pointer == "/feeder_spin" ||
-                         spec.pointer == "/friction_stiffness_ratio";
+    const bool neutral =
+        spec.pointer == "/numerics/shell_inertia_thickness" || spec.pointer == "/feeder_spin" ||
+        spec.pointer == "/friction_stiffness_ratio" || spec.pointer == "/numerics/damping_form" ||
+        spec.pointer.starts_with("/perturbation/");
     EXPECT_EQ(s.resolved.contains(json::json_pointer(spec.pointer)), !neutral) << spec.pointer;
   }
   EXPECT_EQ(s.engine.numerics.shell_inertia_thickness, 1.0);
@@ -84,6 +86,34 @@ TEST(SceneConfig, DefaultsFilled) {
   EXPECT_EQ(s.resolved["/numerics/twist"_json_pointer], "auto");
   // Resolving is idempotent: the resolved scene resolves to itself.
   EXPECT_EQ(parse_scene(s.resolved, "resolved").resolved, s.resolved);
+}
+
+// damping_form and the perturbation keys (Engine VI) enter the resolved scene only where they
+// differ from their defaults, so every run made before them keeps its id; given, they reach the
+// engine and resolve idempotently.
+TEST(SceneConfig, DampingFormAndPerturbationResolvedWhereNotDefault) {
+  json j = minimal_elastic();
+  j["numerics"]["damping_form"] = "relative";
+  j["perturbation"] = {{"deflection", 0.05}, {"release_noise", 1e-3}, {"offset", 0}};
+  const Scene plain = parse_scene(j, "s.json");
+  EXPECT_EQ(plain.resolved, parse_scene(minimal_elastic(), "s.json").resolved);
+  EXPECT_EQ(plain.engine.numerics.damping_form, DampingForm::Relative);
+
+  j["numerics"]["damping_form"] = "absolute";
+  j["perturbation"]["offset"] = 1e-6;
+  const Scene s = parse_scene(j, "s.json");
+  EXPECT_EQ(s.engine.numerics.damping_form, DampingForm::Absolute);
+  EXPECT_EQ(s.engine.perturbation_offset, 1e-6);
+  EXPECT_EQ(s.engine.perturbation_deflection, 0.05);
+  EXPECT_EQ(s.resolved["/numerics/damping_form"_json_pointer], "absolute");
+  EXPECT_EQ(s.resolved["perturbation"], json({{"offset", 1e-6}}));      // defaults left out
+  EXPECT_EQ(parse_scene(s.resolved, "resolved").resolved, s.resolved);  // idempotent
+
+  j["numerics"]["damping_form"] = "viscous";
+  EXPECT_THROW(parse_scene(j, "s.json"), InputError);
+  j["numerics"]["damping_form"] = "absolute";
+  j["perturbation"]["release_noise"] = -1;
+  EXPECT_THROW(parse_scene(j, "s.json"), InputError);
 }
 
 // shell_inertia_thickness is in the resolved scene (so in the run's id) exactly where it changes
@@ -380,7 +410,7 @@ TEST(SceneConfig, SchemaMarkdown) {
 
 // Presets (README "Presets"): each resolves to its documented settings, scaled by r.
 TEST(SceneConfig, NumericsPresetsResolveToTheirSettings) {
-  ASSERT_EQ(numerics_presets().size(), 3u);
+  ASSERT_EQ(numerics_presets().size(), 4u);
   for (const auto& p : numerics_presets()) {
     for (const double r : {0.5e-3, 0.25e-3}) {
       json j = minimal_elastic();
@@ -392,6 +422,8 @@ TEST(SceneConfig, NumericsPresetsResolveToTheirSettings) {
       EXPECT_DOUBLE_EQ(s.engine.numerics.shell_mesh_size, p.mesh_per_r * r) << p.name;
       EXPECT_EQ(s.engine.numerics.quasistatic_ratio, p.quasistatic_ratio) << p.name;
       EXPECT_EQ(s.engine.numerics.tolerance, p.tolerance) << p.name;
+      EXPECT_EQ(s.engine.numerics.mass_scaling,
+                p.mass_scaling == "uniform" ? MassScaling::Uniform : MassScaling::Selective);
       EXPECT_EQ(s.engine.numerics.damping_ratio, 0.05);  // not a preset knob
       EXPECT_FALSE(s.resolved["numerics"].contains("preset"));
     }
@@ -403,6 +435,14 @@ TEST(SceneConfig, NumericsPresetsResolveToTheirSettings) {
   EXPECT_EQ(acc.element_per_r, 0.5);
   EXPECT_EQ(acc.tolerance, 3e-5);
   EXPECT_EQ(find_numerics_preset("slow"), nullptr);
+  // inertial: the default's resolution with every mode at the scaled mass (results/crumpling);
+  // a given mass_scaling overrides it like any key beside a preset.
+  const NumericsPreset& in = *find_numerics_preset("inertial");
+  EXPECT_EQ(in.mass_scaling, "uniform");
+  EXPECT_EQ(in.quasistatic_ratio, 0.01);
+  json j = minimal_elastic();
+  j["numerics"] = {{"preset", "inertial"}, {"mass_scaling", "selective"}};
+  EXPECT_EQ(parse_scene(j, "s.json").engine.numerics.mass_scaling, MassScaling::Selective);
 }
 
 TEST(SceneConfig, DefaultPresetIsTheSameSceneAsNoPreset) {
