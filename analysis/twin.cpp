@@ -7,9 +7,10 @@
 
 namespace wirepack::analysis {
 
-double twin_separation(std::span<const Eigen::Vector3d> a, std::span<const Eigen::Vector3d> b) {
+TwinSeparation twin_separation(std::span<const Eigen::Vector3d> a,
+                               std::span<const Eigen::Vector3d> b) {
   const std::size_t n = std::min(a.size(), b.size());
-  if (n == 0) return 0.0;
+  if (n == 0) return {};
   // Best rotation about z: maximise sum_i b_i . R(phi) a_i = C cos(phi) + S sin(phi).
   double c = 0, s = 0;
   for (std::size_t i = 0; i < n; ++i) {
@@ -18,13 +19,17 @@ double twin_separation(std::span<const Eigen::Vector3d> a, std::span<const Eigen
   }
   const double phi = std::atan2(s, c);
   const double cp = std::cos(phi), sp = std::sin(phi);
-  double worst = 0;
+  TwinSeparation out;
+  double sum2 = 0;
   for (std::size_t i = 0; i < n; ++i) {
     const Eigen::Vector3d ra(cp * a[i].x() - sp * a[i].y(), sp * a[i].x() + cp * a[i].y(),
                              a[i].z());
-    worst = std::max(worst, (ra - b[i]).norm());
+    const double d2 = (ra - b[i]).squaredNorm();
+    out.max = std::max(out.max, std::sqrt(d2));
+    sum2 += d2;
   }
-  return worst;
+  out.rms = std::sqrt(sum2 / static_cast<double>(n));
+  return out;
 }
 
 double twin_parting_l(std::span<const double> l, std::span<const double> separation,

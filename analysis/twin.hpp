@@ -10,11 +10,18 @@
 
 namespace wirepack::analysis {
 
-// Largest node distance between centerlines a and b (nodes in order from the hole, the common
+struct TwinSeparation {
+  double max = 0;  // largest node distance [m]
+  double rms = 0;  // root mean square node distance [m]
+};
+// Node distances between centerlines a and b (nodes in order from the hole, the common
 // n = min(|a|, |b|) first nodes compared) after rotating a about the z axis (the feed axis,
 // through the origin) by the angle that minimises sum_i |R(phi) a_i - b_i|^2:
-// phi = atan2(sum_i (a_i x b_i)_z, sum_i (a_ix b_ix + a_iy b_iy)) [m]. 0 for n = 0.
-double twin_separation(std::span<const Eigen::Vector3d> a, std::span<const Eigen::Vector3d> b);
+// phi = atan2(sum_i (a_i x b_i)_z, sum_i (a_ix b_ix + a_iy b_iy)). Zeros for n = 0. The largest
+// distance sees a local departure (a stick-slip event at another moment), the rms one a
+// different packing.
+TwinSeparation twin_separation(std::span<const Eigen::Vector3d> a,
+                               std::span<const Eigen::Vector3d> b);
 
 // First l at which the separation exceeds `threshold` (l and separation of equal length, in
 // order of l); NaN if it never does.

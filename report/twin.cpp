@@ -37,18 +37,22 @@ TwinComparison compare_twins(const sweep::RunRecord& a, const sweep::RunRecord& 
     if (std::abs(sa.l - sb.l) > 0.05) break;
     const auto xa = from_hole(sa);
     const auto xb = from_hole(sb);
+    const analysis::TwinSeparation d = analysis::twin_separation(xa, xb);
     c.l.push_back(sa.l);
-    c.separation_r.push_back(analysis::twin_separation(xa, xb) / r);
+    c.separation_r.push_back(d.max / r);
+    c.rms_r.push_back(d.rms / r);
   }
   c.parting_l = analysis::twin_parting_l(c.l, c.separation_r, threshold_r);
+  c.parting_rms_l = analysis::twin_parting_l(c.l, c.rms_r, threshold_r);
   return c;
 }
 
 std::string twin_csv(const TwinComparison& c) {
   std::ostringstream o;
-  o << "l,separation_r\n";
+  o << "l,separation_r,rms_r\n";
   for (std::size_t k = 0; k < c.l.size(); ++k)
-    o << sweep::format_number(c.l[k]) << ',' << sweep::format_number(c.separation_r[k]) << '\n';
+    o << sweep::format_number(c.l[k]) << ',' << sweep::format_number(c.separation_r[k]) << ','
+      << sweep::format_number(c.rms_r[k]) << '\n';
   return o.str();
 }
 

@@ -1,8 +1,8 @@
 #pragma once
 // Twin runs (decorrelation diagnostic): two run files of one scene whose perturbations differ by
-// a tiny offset (scene key perturbation/offset), compared snapshot by snapshot: the largest node
-// distance modulo a rotation about the feed axis (analysis/twin.hpp), in wire radii, and the
-// first l where it exceeds the threshold (r by default).
+// a tiny offset (scene key perturbation/offset), compared snapshot by snapshot: the largest and
+// the rms node distance modulo a rotation about the feed axis (analysis/twin.hpp), in wire
+// radii, and the first l where each exceeds the threshold (r by default).
 #include <string>
 #include <vector>
 
@@ -13,7 +13,9 @@ namespace wirepack::report {
 struct TwinComparison {
   std::vector<double> l;             // l of the compared snapshots (run a's) [-]
   std::vector<double> separation_r;  // largest node distance modulo the rotation / r [-]
+  std::vector<double> rms_r;         // rms node distance modulo the rotation / r [-]
   double parting_l = 0;              // first l with separation_r > threshold_r; NaN: never
+  double parting_rms_l = 0;          // first l with rms_r > threshold_r; NaN: never
   double threshold_r = 1;            // [-]
 };
 
@@ -22,7 +24,7 @@ struct TwinComparison {
 TwinComparison compare_twins(const sweep::RunRecord& a, const sweep::RunRecord& b,
                              double threshold_r = 1.0);
 
-// CSV: "l,separation_r", one row per compared snapshot.
+// CSV: "l,separation_r,rms_r", one row per compared snapshot.
 std::string twin_csv(const TwinComparison& c);
 
 }  // namespace wirepack::report

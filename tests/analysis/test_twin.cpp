@@ -35,28 +35,30 @@ TEST(TwinSeparation, ARotatedCopyAboutTheFeedAxisIsTheSameTrajectory) {
   // Seeds that pick another azimuth of one path: separation 0 (to rounding) at any angle.
   const auto a = wire(200);
   for (double phi : {0.0, 0.3, 2.0, -3.0, std::numbers::pi})
-    EXPECT_NEAR(twin_separation(a, rotated(a, phi)), 0.0, 1e-12) << phi;
+    EXPECT_NEAR(twin_separation(a, rotated(a, phi)).max, 0.0, 1e-12) << phi;
 }
 
 TEST(TwinSeparation, ALocalDepartureIsMeasuredInFull) {
-  // One node moved by 0.25 along z (rotation about z cannot absorb it): separation 0.25, to
-  // the small misalignment the best-fit angle takes up (< 1e-3 here, 200 nodes).
+  // One node moved by 0.25 along z (rotation about z cannot absorb it): largest distance 0.25,
+  // rms 0.25 / sqrt(200).
   const auto a = wire(200);
   auto b = rotated(a, 1.1);
   b[150].z() += 0.25;
-  EXPECT_NEAR(twin_separation(a, b), 0.25, 1e-9);
+  EXPECT_NEAR(twin_separation(a, b).max, 0.25, 1e-9);
+  EXPECT_NEAR(twin_separation(a, b).rms, 0.25 / std::sqrt(200.0), 1e-9);
   // A mirror image (the other coiling sense) is not a rotation: it parts by O(size).
   auto m = a;
   for (auto& p : m) p.y() = -p.y();
-  EXPECT_GT(twin_separation(a, m), 0.1);
+  EXPECT_GT(twin_separation(a, m).max, 0.1);
+  EXPECT_GT(twin_separation(a, m).rms, 0.05);
 }
 
 TEST(TwinSeparation, ComparesTheCommonNodesFromTheHole) {
   const auto a = wire(200);
   auto b = a;
   b.resize(150);  // b one node row shorter: only its 150 nodes count
-  EXPECT_NEAR(twin_separation(a, b), 0.0, 1e-15);
-  EXPECT_EQ(twin_separation(std::vector<V>{}, a), 0.0);
+  EXPECT_NEAR(twin_separation(a, b).max, 0.0, 1e-15);
+  EXPECT_EQ(twin_separation(std::vector<V>{}, a).rms, 0.0);
 }
 
 TEST(TwinPartingL, FirstRowAboveTheThreshold) {

@@ -220,11 +220,13 @@ TEST(Cli, TwinComparesTwoRunsModuloTheFeedAxisRotation) {
   const Result same = wirepack(dir, "twin a.h5 a2.h5 --csv same.csv");
   ASSERT_EQ(same.code, 0) << same.err;
   EXPECT_NE(same.out.find("snapshots compared: 3 (l <= 1.5"), std::string::npos) << same.out;
-  EXPECT_NE(same.out.find("never parted by more than 1 r (largest 0 r)"), std::string::npos)
+  EXPECT_NE(same.out.find("never parted by more than 1 r (largest 0 r); rms never above 1 r "
+                          "(largest 0 r)"),
+            std::string::npos)
       << same.out;
   const std::string rows = read_text(dir / "same.csv");
-  EXPECT_EQ(rows.rfind("l,separation_r\n0.5", 0), 0u) << rows;
-  EXPECT_NE(rows.find(",0\n"), std::string::npos) << rows;
+  EXPECT_EQ(rows.rfind("l,separation_r,rms_r\n0.5", 0), 0u) << rows;
+  EXPECT_NE(rows.find(",0,0\n"), std::string::npos) << rows;
   const Result ab = wirepack(dir, "twin a.h5 b.h5");
   ASSERT_EQ(ab.code, 0) << ab.err;
   // The 1e-6 r offset is still of its own size at l = 1.5 (a rigid scene that has barely

@@ -41,13 +41,16 @@ TEST(Twin, RotatedTwinsNeverPart) {
   ASSERT_EQ(c.l.size(), 6u);
   for (double s : c.separation_r) EXPECT_NEAR(s, 0.0, 1e-9);
   EXPECT_TRUE(std::isnan(c.parting_l));
-  EXPECT_EQ(twin_csv(c).substr(0, 15), "l,separation_r\n");
+  EXPECT_EQ(twin_csv(c).substr(0, 21), "l,separation_r,rms_r\n");
+  EXPECT_TRUE(std::isnan(c.parting_rms_l));
 }
 
 TEST(Twin, PartingLIsTheFirstSnapshotBeyondTheThreshold) {
   const TwinComparison c = compare_twins(run(0.0, none), run(0.7, grows));
   ASSERT_EQ(c.separation_r.size(), 6u);
-  EXPECT_NEAR(c.separation_r[2], 0.8, 1e-6);  // the tip's lift, in r
+  EXPECT_NEAR(c.separation_r[2], 0.8, 1e-6);             // the tip's lift, in r
+  EXPECT_NEAR(c.rms_r[2], 0.8 / std::sqrt(50.0), 1e-6);  // one node of 50
+  EXPECT_TRUE(std::isnan(c.parting_rms_l));
   EXPECT_NEAR(c.parting_l, 3.0, 1e-3);
   EXPECT_NEAR(compare_twins(run(0.0, none), run(0.7, grows), 1.9).parting_l, 5.0, 1e-3);
 }
