@@ -316,12 +316,17 @@ int cmd_twin(const std::string& a, const std::string& b, double threshold_r,
     const auto top = std::max_element(c.separation_r.begin(), c.separation_r.end());
     std::cout << "snapshots compared: " << c.l.size() << " (l <= " << format_number(c.l.back())
               << "); ";
+    const std::string t = format_number(threshold_r) + " r";
     if (std::isnan(c.parting_l))
-      std::cout << "never parted by more than " << format_number(threshold_r) << " r (largest "
-                << format_number(*top) << " r)\n";
+      std::cout << "never parted by more than " << t << " (largest " << format_number(*top)
+                << " r)";
     else
-      std::cout << "parted by more than " << format_number(threshold_r)
-                << " r at l = " << format_number(c.parting_l) << "\n";
+      std::cout << "parted by more than " << t << " at l = " << format_number(c.parting_l);
+    const auto rms = std::max_element(c.rms_r.begin(), c.rms_r.end());
+    if (std::isnan(c.parting_rms_l))
+      std::cout << "; rms never above " << t << " (largest " << format_number(*rms) << " r)\n";
+    else
+      std::cout << "; rms above " << t << " at l = " << format_number(c.parting_rms_l) << "\n";
   } catch (const RunFileError& e) {
     throw InputError(e.what());
   } catch (const WriteError& e) {
@@ -388,7 +393,7 @@ int main(int argc, char** argv) {
   auto* analyze = app.add_subcommand(
       "analyze",
       "tables (CSV) and plots of a sweep directory: D curves, scaling exponents, seed-averaged "
-      "series, curvature and loop-length distributions (README section \"Analysis\")");
+      "series, curvature and loop-length distributions (docs/reference.md, \"Analysis\")");
   analyze->add_option("dir", analyze_opt.dir, "sweep directory (written by wirepack sweep)")
       ->required();
   analyze->add_option("-o,--out", analyze_opt.out, "output directory (default DIR/analysis)");
@@ -427,8 +432,8 @@ int main(int argc, char** argv) {
   auto* refine = app.add_subcommand(
       "refine",
       "add grid values where they narrow the interval of the critical point most (before a "
-      "fit: where D changes fastest) and run them with the same seeds; resumable (README "
-      "\"Critical points\")");
+      "fit: where D changes fastest) and run them with the same seeds; resumable "
+      "(docs/reference.md, \"Critical points\")");
   refine->add_option("dir", refine_opt.dir, "sweep directory (written by wirepack sweep)")
       ->required();
   refine->add_option("--axis", refine_opt.axis,
@@ -460,7 +465,8 @@ int main(int argc, char** argv) {
       "accuracy",
       "accuracy-vs-time study of sweep directories whose grids are ladders over numerics "
       "(element_length, shell_mesh_size, quasistatic_ratio, tolerance): error against the "
-      "finest setting and wall time per setting, CSV and a Pareto plot (README \"Accuracy\")");
+      "finest setting and wall time per setting, CSV and a Pareto plot (docs/reference.md, "
+      "\"Accuracy and presets\")");
   accuracy->add_option("dirs", accuracy_opt.dirs, "sweep directories (pooled)")->required();
   accuracy->add_option("-o,--out", accuracy_opt.out, "output directory (default DIR/accuracy)");
   accuracy->add_option("--window", accuracy_window,
@@ -511,8 +517,8 @@ int main(int argc, char** argv) {
       "render",
       "draw a run file with ParaView (pvbatch, off-screen): the wire as a tube coloured by its "
       "curvature kappa R, the shell translucent and coloured by a field; a picture of one "
-      "snapshot and/or a movie of all (falls back to gnuplot without ParaView; README "
-      "\"Pictures and movies\")");
+      "snapshot and/or a movie of all (falls back to gnuplot without ParaView; "
+      "docs/reference.md, \"Pictures and movies\")");
   render->add_option("run_file", render_opt.run_file, "run file (HDF5)")->required();
   auto* render_outputs = render->add_option_group("outputs", "at least one of");
   render_outputs->add_option("-o,--out", render_opt.out, "picture to write (PNG)");

@@ -26,7 +26,7 @@ struct Variant {
   EffectMode shell_self;
 };
 
-// In the order of the README's effect-cost table.
+// In the order of the effect-cost table in docs/measurements.md ("Effects on demand").
 const Variant kVariants[] = {
     {"rigid", false, 0.0, EffectMode::Auto, EffectMode::Auto},
     {"rigid, shell_self_contact on (a rigid sphere cannot fold)", false, 0.0, EffectMode::Auto,

@@ -20,7 +20,7 @@
 
 namespace wirepack {
 
-// Numerical constants of ours (documented in the README).
+// Numerical constants of ours (documented in docs/design.md and docs/reference.md).
 struct SceneConstants {
   static constexpr double kHoleClearance = 0.1;  // hole radius r_h = (1 + 0.1) r
   static constexpr double kSkin = 0.5;           // Verlet skin of the self-contact list / r

@@ -17,7 +17,7 @@
 // beat for one trajectory.
 //
 // Outputs, in OUT (default: the first DIR/accuracy), written to a temporary name and renamed:
-//   accuracy.csv    one row per (scene, seed, knob, value); columns in the README
+//   accuracy.csv    one row per (scene, seed, knob, value); columns in docs/reference.md
 //   pareto.gp/.png  err_UK (the larger relative error of U_b_hat and K) against wall time per
 //                   scene, one point set per knob, the seed floor as a line (gnuplot, if present)
 #include <cstddef>

@@ -21,7 +21,7 @@
 //   distributions.csv  lognormal fits of kappa^2/<kappa^2> and Lambda/r at one l, with the
 //                      histogram of the logarithm
 //   plots/*.gp, *.png  gnuplot scripts (data inline) and their PNGs where gnuplot is present
-// The README's section "Analysis" documents every column.
+// docs/reference.md, section "Analysis", documents every column.
 #include <cstddef>
 #include <map>
 #include <optional>

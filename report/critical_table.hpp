@@ -2,7 +2,7 @@
 // Critical points in `wirepack analyze` and `wirepack refine` (issue 16): the per-point D of a
 // sweep cut into slices (one swept transition parameter x, the other swept parameters fixed),
 // each fitted by analysis::fit_critical; critical.csv, phase_diagram.csv and the phase-diagram
-// plots. The README's section "Critical points" documents every column.
+// plots. docs/reference.md, section "Critical points", documents every column.
 #include <cstddef>
 #include <map>
 #include <optional>

@@ -1,5 +1,5 @@
 #pragma once
-// The CSV tables of `wirepack analyze` (docs/design.md §4.6; columns in the README's section
+// The CSV tables of `wirepack analyze` (docs/design.md §4.6; columns in docs/reference.md, section
 // "Analysis"): text of each file from an Analysis and its reductions.
 #include <string>
 #include <vector>

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
-# The accuracy-vs-time study (README "Accuracy and presets"): runs the one-knob ladders of
-# scenes/accuracy/*.sweep.json (rigid: rho = 20, mu_s = 0, l = 20; elastic: rho = 20, xi = 10,
-# eps = 1e3, mu_s = 0 and 0.5, l = 8) and the presets into sweeps/accuracy/NAME, then
-# `wirepack accuracy` over the ladders into OUT (default results/accuracy) and over the presets
-# into OUT/presets. Resumable: rerun it and finished runs are kept.
+# The accuracy-vs-time study (docs/reference.md and docs/measurements.md, "Accuracy and presets"):
+# runs the one-knob ladders of scenes/accuracy/*.sweep.json (rigid: rho = 20, mu_s = 0, l = 20;
+# elastic: rho = 20, xi = 10, eps = 1e3, mu_s = 0 and 0.5, l = 8) and the presets into
+# sweeps/accuracy/NAME, then `wirepack accuracy` over the ladders into OUT (default
+# results/accuracy) and over the presets into OUT/presets. Resumable: rerun it and finished runs are
+# kept.
 # Usage: scripts/accuracy_study.sh [rigid|elastic|all] [THREADS] [OUT]
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -1,7 +1,7 @@
 #pragma once
 // Strict scene config (docs/design.md §4.1): one table of (JSON pointer, type, default,
-// range, doc) drives validation, default filling, `wirepack validate` and the schema in the
-// README. Errors are collected and thrown together as one InputError.
+// range, doc) drives validation, default filling, `wirepack validate` and the schema in
+// docs/reference.md. Errors are collected and thrown together as one InputError.
 #include <optional>
 #include <string>
 #include <vector>
@@ -26,9 +26,10 @@ struct Scene {
   std::string numerics_preset = "default";  // the preset the numerics defaults came from
 };
 
-// A numerics preset (README "Presets"): `"numerics": "NAME"` or `{"preset": "NAME", ...}` sets
-// these four defaults; keys given beside "preset" override them. Not part of the resolved
-// scene (a run's identity is its resolved values, so "default" and no preset are one run).
+// A numerics preset (docs/reference.md "Scene file"; measured in docs/measurements.md "Presets"):
+// `"numerics": "NAME"` or `{"preset": "NAME", ...}` sets these four defaults; keys given beside
+// "preset" override them. Not part of the resolved scene (a run's identity is its resolved values,
+// so "default" and no preset are one run).
 struct NumericsPreset {
   std::string name;                        // "fast" | "default" | "accurate" | "inertial"
   double element_per_r;                    // element_length / wire radius [-]

@@ -281,7 +281,7 @@ const std::vector<KeySpec>& scene_schema() {
 }
 
 const std::vector<NumericsPreset>& numerics_presets() {
-  // Chosen from the accuracy-vs-time study (results/accuracy, README "Presets").
+  // Chosen from the accuracy-vs-time study (results/accuracy, docs/measurements.md "Presets").
   static const std::vector<NumericsPreset> table = {
       {"fast", 2.0, 4.0, 0.02, 1e-3, "quick looks and broad scans"},
       {"default", 1.0, 2.0, 0.01, 1e-3, "production nights"},

@@ -1,9 +1,10 @@
 #pragma once
 // The recorded observables (docs/design.md §5.7): one list, declared once, with each series'
 // name, unit, description and how it is computed. The recorder (run.cpp) fills one value of
-// every series per row, in list order; the run file, `wirepack export --csv`, the README's table
-// of series, `wirepack analyze` (the kept series) and `wirepack accuracy` (the compared series)
-// take their columns from it. A new output column is one more entry in recorded_series().
+// every series per row, in list order; the run file, `wirepack export --csv`, the table of series
+// in docs/reference.md, `wirepack analyze` (the kept series) and `wirepack accuracy` (the
+// compared series) take their columns from it. A new output column is one more entry in
+// recorded_series().
 #include <functional>
 #include <optional>
 #include <span>
@@ -50,7 +51,7 @@ class SeriesContext {
 struct SeriesDef {
   std::string name;         // column name, e.g. "U_b_hat"
   std::string unit;         // "-" when dimensionless
-  std::string description;  // one line (the README's table)
+  std::string description;  // one line (the table in docs/reference.md)
   std::function<double(const SeriesContext&)> compute;
   // Position among the series `wirepack analyze` keeps per complete run (series.csv columns,
   // 1 first); 0: not kept.
@@ -61,7 +62,7 @@ using SeriesList = std::vector<SeriesDef>;
 
 // The recorded series, in column order: l, U_b_hat, U_b, U_t, U_s, U_m, U_sb, E_kin, K, N, S, D,
 // R_t, R_x, R_y, dt, wall_s, steps, S_kappa, D_chord, chord (descriptions and units in
-// sweep/series.cpp and the README).
+// sweep/series.cpp and docs/reference.md).
 const SeriesList& recorded_series();
 
 // The names of `list`, in column order.
@@ -74,7 +75,7 @@ std::vector<std::string> analysis_series(const SeriesList& list = recorded_serie
 // The series compared by the accuracy study, in column order.
 std::vector<std::string> accuracy_series(const SeriesList& list = recorded_series());
 
-// The README's table of series (name, unit, meaning), one row per series, in column order.
+// docs/reference.md's table of series (name, unit, meaning), one row per series, in column order.
 std::string series_markdown(const SeriesList& list = recorded_series());
 
 }  // namespace wirepack::sweep

@@ -279,7 +279,7 @@ const json& default_sweep_json() {
   // coil at mu_s = 0 and 0.1, the crumpled packing at 0.25 and 0.5 (README, first command).
   // The default preset with a shell mesh of 3 r (not 2 r) and l up to 14 keep it within a few
   // minutes on 2 cores; D is maximised over l in [8, 14], after the bifurcation at l ~ 6.5
-  // (below l ~ 8 the wire's entry chord gives a coil D ~ 1 / l, README "Analysis").
+  // (below l ~ 8 the wire's entry chord gives a coil D ~ 1 / l, docs/reference.md "Analysis").
   static const json j = {{"name", "default"},
                          {"base",
                           {{"rho", 20},

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# bench_shell before -> after, interleaved (README "Speed of the elastic step", bench_shell
-# table): the whole elastic step and the shell forces alone, ns per face-step, medians of 5.
+# bench_shell before -> after, interleaved (docs/measurements.md "Speed of the elastic step",
+# bench_shell table): the whole elastic step and the shell forces alone, ns per face-step, medians
+# of 5.
 # Usage, from the repository root, on an otherwise idle machine:
 #   bash results/engine5/bench_interleaved.sh BEFORE [OUT]
 # BEFORE: a build directory of the commit before Engine V (ffe83fa) with bench_shell built;

@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# A load that arrives while a run holds 2 threads (README "Speed of the elastic step", "Fewer
-# threads when more are slower"). Runs `wirepack run --threads THREADS` of the elastic reference
-# scene at mu_s 0.5 (rho 20, xi 10, eps 1e3, default numerics) alone for 30 s, then beside a busy
-# loop at equal priority (its own session, so its own scheduler group) for 120 s, and prints the
-# l the run had reached at 30 s and at the end. Usage, from the repository root:
+# A load that arrives while a run holds 2 threads (docs/measurements.md "Speed of the elastic step",
+# "Fewer threads when more are slower"). Runs `wirepack run --threads THREADS` of the elastic
+# reference scene at mu_s 0.5 (rho 20, xi 10, eps 1e3, default numerics) alone for 30 s, then beside
+# a busy loop at equal priority (its own session, so its own scheduler group) for 120 s, and prints
+# the l the run had reached at 30 s and at the end. Usage, from the repository root:
 #   bash results/engine5/governor_load.sh [WIREPACK] [THREADS]   (defaults build/wirepack, 2)
 # Compare two binaries (or 2 threads against 1) one after the other in one sitting: the l gained
 # beside the loop is the figure; the run file is deleted.

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Engine V benchmarks (README "Benchmarks", Engine V table). Usage, from the repository root
-# after scripts/setup.sh, on an otherwise idle 2-core machine:
+# Engine V benchmarks (docs/measurements.md "Speed of the elastic step", Engine V tables). Usage,
+# from the repository root after scripts/setup.sh, on an otherwise idle 2-core machine:
 #   bash results/engine5/make.sh [BEFORE]
 # BEFORE: a build directory of an earlier wirepack (e.g. a worktree of the commit before
 # Engine V, built with scripts/setup.sh) measured the same way, for the before -> after

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Engine V, second round (README "Speed of the elastic step"): the elastic reference runs on one
-# thread, and a long run on 1 and on 2 threads. Usage, from the repository root after
+# Engine V, second round (docs/measurements.md "Speed of the elastic step"): the elastic reference
+# runs on one thread, and a long run on 1 and on 2 threads. Usage, from the repository root after
 # scripts/setup.sh, on an otherwise idle 2-core machine:
 #   bash results/engine5/make_threads.sh [refs|threads|all]   (default all)
 # refs: the two reference runs (rho 20, xi 10, eps 1e3, default numerics, to l = 30), one after

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# Hard-scene suite (README "Reliability", issue 19 part 1): runs the slow tests
-# sweep.Suite/HardScenes.* one after the other and collects their HARD_SCENE lines into
-# results/hard_scenes/runs.csv (one row per scene). Usage, from the repository root after a
-# Release build in build/:
+# Hard-scene suite (docs/reference.md and docs/measurements.md, "Hard scenes"; issue 19 part 1):
+# runs the slow tests sweep.Suite/HardScenes.* one after the other and collects their HARD_SCENE
+# lines into results/hard_scenes/runs.csv (one row per scene). Usage, from the repository root
+# after a Release build in build/:
 #   bash results/hard_scenes/make.sh [BUILD_DIR]
 # About 25 min on one core. The test log goes to results/hard_scenes/ctest.log.
 set -euo pipefail

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Reproduces results/quasistatic/: the measurements of the quasi-static numerics (README
-# "Quasi-static regime").
+# Reproduces results/quasistatic/: the measurements of the quasi-static numerics
+# (docs/measurements.md "Quasi-static regime").
 #  1. damping.csv: the phase against the damping ratio zeta in {0.02, 0.05, 0.2, 0.5} at
 #     mu_s = 0.3 and 0.5 (rho = 20, xi = 10, eps = 1e3, seed 1, l = 12, default numerics): D
 #     maximised and averaged over l in [5, 12] (scenes/damping_sensitivity.sweep.json).

@@ -1,6 +1,6 @@
 // The one list of recorded series (docs/design.md §5.7, sweep/series.hpp): its columns, the
-// series the reports name, the README's table, and one extra series passed through the run
-// loop, `wirepack export --csv` and `wirepack analyze`'s series.csv.
+// series the reports name, the table in docs/reference.md, and one extra series passed through
+// the run loop, `wirepack export --csv` and `wirepack analyze`'s series.csv.
 #include "sweep/series.hpp"
 
 #include <algorithm>
@@ -70,12 +70,13 @@ TEST(SeriesList, NamedSeriesAreInTheList) {
   }
 }
 
-// The README's table of series is the list's markdown (regenerate: copy it from this failure).
+// The table of series in docs/reference.md (section "Run file (HDF5)") is the list's markdown
+// (regenerate: copy it from this failure).
 TEST(SeriesList, ReadmeTableIsGenerated) {
-  const std::string readme = read_text(WIREPACK_SOURCE_DIR "/README.md");
+  const std::string readme = read_text(WIREPACK_SOURCE_DIR "/docs/reference.md");
   const std::string md = sweep::series_markdown();
   EXPECT_NE(readme.find("\n" + md + "\n"), std::string::npos)
-      << "README.md's table of series differs from sweep::series_markdown():\n"
+      << "docs/reference.md's table of series differs from sweep::series_markdown():\n"
       << md;
   EXPECT_EQ(md.rfind("| name | unit | meaning |\n| --- | --- | --- |\n| `l` | - |", 0), 0u) << md;
   // A '|' in a description is escaped, so each row keeps three cells.

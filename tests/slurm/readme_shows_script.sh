@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# The README's job-array script (the bash block of section "Shards and SLURM job arrays") is
+# docs/reference.md's job-array script (the bash block of section "Shards and SLURM job arrays") is
 # exactly scripts/slurm_sweep.sbatch, the file tests/slurm/test_slurm.sh runs on a real SLURM.
-#   tests/slurm/readme_shows_script.sh README.md scripts/slurm_sweep.sbatch
+#   tests/slurm/readme_shows_script.sh docs/reference.md scripts/slurm_sweep.sbatch
 set -euo pipefail
 readme=$1
 script=$2
@@ -16,7 +16,7 @@ if [ -z "$block" ]; then
 fi
 if ! diff -u <(printf '%s\n' "$block") "$script"; then
   echo "$readme: the job-array script of section \"Shards and SLURM job arrays\" differs from" \
-    "$script (above: README, then the file); copy the file into the README" >&2
+    "$script (above: $readme, then the file); copy the file into $readme" >&2
   exit 1
 fi
 echo "$readme shows $script exactly"

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# SLURM job arrays end to end: scripts/slurm_sweep.sbatch, the README's job-array script, on a
-# real SLURM. Starts a one-node cluster of its own in a temporary directory (its own slurm.conf,
-# munge key and socket, free ports; SlurmUser = the current user), then
+# SLURM job arrays end to end: scripts/slurm_sweep.sbatch, docs/reference.md's job-array script,
+# on a real SLURM. Starts a one-node cluster of its own in a temporary directory (its own
+# slurm.conf, munge key and socket, free ports; SlurmUser = the current user), then
 #   1. submits the script as 3 array tasks over a tiny sweep (6 runs): every task completes,
 #      each shard ran exactly its runs (index K mod 3), the union of the shards' run files is the
 #      unsharded set, bitwise equal to an unsharded `wirepack sweep` run directly (series but

@@ -1,9 +1,10 @@
 // Hard-scene suite (issue 19, part 1; label "slow"): the 16 corners of rho in {10, 40},
 // xi in {10, 200}, eps in {1, 1e4}, mu_s in {0, 1.5}, the head-on tip into the stiffest shell,
 // the densest long runs (rho = 10, rigid and elastic), the coarsest and finest numerics presets
-// at one corner. Each scene runs to an l_max chosen to take well under a minute of CPU on the
-// 2-core development machine (README section "Reliability", where the table of one measured
-// run is). What each scene must show:
+// at one corner, and Engine VI's absolute damping and inertial preset at three of them. Each scene
+// runs to an l_max chosen to take well under a minute of CPU on the 2-core development machine
+// (docs/reference.md "Hard scenes"; the table of one measured run is in docs/measurements.md
+// "Hard scenes"). What each scene must show:
 //   - it ends, within its budget of CPU time: complete, or failed with a reason; the only
 //     failures accepted are the ones that say "this run cannot continue" (the step collapsed,
 //     the packing jams the feed, or the budget was spent), never NaN/Inf or a wire through the
@@ -16,7 +17,8 @@
 //   - overlaps (largest over every accepted step): wire-wire and wire-wall (nodes past the
 //     entrance) below r, wire-shell reported (the engine fails a run whose wire axis reaches
 //     the shell's mid-surface).
-// One line per scene starting with HARD_SCENE (CSV) gives the figures of the README table.
+// One line per scene starting with HARD_SCENE (CSV) gives the figures of the table in
+// docs/measurements.md "Hard scenes".
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -114,7 +116,8 @@ int node_outside(const Simulation& sim, const ShellWinding* winding) {
 
 // Largest overlap |x| + r - R of a released node with the rigid sphere, the nodes in the
 // entrance (kHoleSkip) left out: there a jammed feed may push the last node back out of the
-// hole (README), which is no node leaving the cavity through its wall [m].
+// hole (docs/measurements.md "Hard scenes"), which is no node leaving the cavity through its
+// wall [m].
 double wall_overlap(const Simulation& sim) {
   const double R = sim.params().R(), r = sim.params().wire.radius;
   double worst = 0.0;
@@ -235,7 +238,7 @@ std::vector<HardScene> hard_scenes() {
   // at the default mesh has ~11.6 k faces (4x rho = 20's) and needs ~40 s of CPU per unit l,
   // so one minute would end before the head-on contact at l ~ 2; the fast preset's 4 r mesh
   // (~2.9 k faces) reaches l = 2.5, past it. l_max: thin (xi = 200) and soft (eps = 1e4)
-  // shells take smaller steps (README table), friction adds twist.
+  // shells take smaller steps (docs/measurements.md "Hard scenes"), friction adds twist.
   struct Corner {
     double rho, xi, eps, mu_s, l_max;
   };
@@ -280,6 +283,23 @@ std::vector<HardScene> hard_scenes() {
                  j["feeder_spin"] = "free";
                  return j;
                }()});
+  // Engine VI's options at the hard corners with friction (results/crumpling): damping of the
+  // whole velocity (numerics.damping_form "absolute") at zeta = 0.5, its strongest setting in
+  // the study, and the inertial preset (uniform mass scaling, q = 0.01), each on the thick stiff
+  // shell at mu_s = 1.5, the thin soft shell at mu_s = 1.5, and the head-on tip.
+  for (const auto& [variant, numerics] :
+       {std::pair<std::string, json>{"absolute",
+                                     {{"damping_form", "absolute"}, {"damping_ratio", 0.5}}},
+        std::pair<std::string, json>{"inertial", {{"preset", "inertial"}}}}) {
+    for (const auto& [corner, j0] :
+         {std::pair{"rho10_xi10_eps1_mu1p5", elastic(10, 10, 1, 1.5, 12)},
+          std::pair{"rho10_xi200_eps1e4_mu1p5", elastic(10, 200, 1e4, 1.5, 5)},
+          std::pair{"head_on_stiffest_shell", elastic(20, 10, 1, 0, 3)}}) {
+      json j = j0;
+      j["numerics"] = numerics;
+      s.push_back({variant + "_" + corner, j});
+    }
+  }
   // The coarsest and the finest numerics presets at the first corner (whose row above is the
   // default preset): fast to the same l, accurate just past the head-on contact.
   for (const auto& [preset, l_max] : {std::pair{"fast", 15.0}, std::pair{"accurate", 2.2}}) {

@@ -6,9 +6,9 @@
 // that decides the phase (damping, inertia). Under the quasi-static numerics (selective mass)
 // the crumpling run alternates between reoriented (D ~ 0.3-0.5) and re-coiled (D ~ 0.1)
 // stretches up to l ~ 14, as the near-physical-inertia reference does, so a mean or minimum of
-// D over a short window no longer separates the phases; the maximum does. Measured (README
-// "Quasi-static regime"): max over [8, 14] 0.10 at mu_s = 0, 0.46 at mu_s = 0.5 (0.63 at the
-// fast preset's q = 0.02).
+// D over a short window no longer separates the phases; the maximum does. Measured
+// (docs/measurements.md "Quasi-static regime"): max over [8, 14] 0.10 at mu_s = 0, 0.46 at
+// mu_s = 0.5 (0.63 at the fast preset's q = 0.02).
 #include <gtest/gtest.h>
 
 #include <algorithm>

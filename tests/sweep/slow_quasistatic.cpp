@@ -1,13 +1,13 @@
-// The quasi-static regime (selective mass scaling, README "Quasi-static regime"), label "slow"
-// (about 8 min on one core): on the paper's elastic scene (rho = 20, xi = 10, eps = 1e3,
+// The quasi-static regime (selective mass scaling, docs/reference.md "Quasi-static regime"), label
+// "slow" (about 8 min on one core): on the paper's elastic scene (rho = 20, xi = 10, eps = 1e3,
 // seed 1) the default numerics agree with a reference whose element-scale inertia is 11 times
-// smaller (quasistatic_ratio 0.003 against 0.01: inertia goes as q^2) to l = 10, and the
-// kinetic energy stays a small fraction of the wire's bending energy.
+// smaller (quasistatic_ratio 0.003 against 0.01: inertia goes as q^2) to l = 10, and the kinetic
+// energy stays a small fraction of the wire's bending energy.
 // Tolerances: the seed floor of the default. Coil (mu_s = 0): U_b_hat and K differ by < 1 %
 // between seeds 1 and 3 at l = 8-10 and the radii by < 0.02 R; 3 % and 0.05 R allow for the
 // reference's own discretisation differences. Crumpled (mu_s = 0.5): the seed floor measured
-// over whole runs is 8 % in U_b_hat and 0.23 in D (README "Tolerance over a whole run"); the
-// mean over l in [8, 10] is compared with those bounds.
+// over whole runs is 8 % in U_b_hat and 0.23 in D (docs/measurements.md "Tolerance over a whole
+// run"); the mean over l in [8, 10] is compared with those bounds.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -408,7 +408,7 @@ TEST(SceneConfig, SchemaMarkdown) {
   EXPECT_NE(md.find("| `/mu_d` | number | 0.9 mu_s | >= 0, <= mu_s |"), std::string::npos);
 }
 
-// Presets (README "Presets"): each resolves to its documented settings, scaled by r.
+// Presets (docs/reference.md "Scene file"): each resolves to its documented settings, scaled by r.
 TEST(SceneConfig, NumericsPresetsResolveToTheirSettings) {
   ASSERT_EQ(numerics_presets().size(), 4u);
   for (const auto& p : numerics_presets()) {

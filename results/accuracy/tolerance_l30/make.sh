@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Reproduces results/accuracy/tolerance_l30/: the step tolerance over whole elastic runs
-# (README "Tolerance over a whole run"). rho = 20, xi = 10, eps = 1e3, mu_s = 0 and 0.5, l = 30,
-# seeds 1 and 2, tolerance 1e-3 (the default since 2026-11-29) against 1e-4 (the default before).
-# Each 1e-4 run at mu_s = 0.5 takes ~45 min on one core; the eight ~2 h of CPU.
+# (docs/measurements.md "Tolerance over a whole run"). rho = 20, xi = 10, eps = 1e3, mu_s = 0 and
+# 0.5, l = 30, seeds 1 and 2, tolerance 1e-3 (the default since 2026-11-29) against 1e-4 (the
+# default before). Each 1e-4 run at mu_s = 0.5 takes ~45 min on one core; the eight ~2 h of CPU.
 # Usage (from anywhere, after scripts/setup.sh): bash results/accuracy/tolerance_l30/make.sh [THREADS]
 set -euo pipefail
 cd "$(dirname "$0")/../../.."

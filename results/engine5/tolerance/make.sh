@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# Can the step tolerance be loosened? (README "Speed of the elastic step", "The tolerance sets
-# the contacts"). rho = 20, xi = 10, eps = 1e3, mu_s = 0 and 0.5, default numerics, l = 30,
-# tolerance 1e-3 (default) and 1e-2, seeds 1 and 2 (~40 min on one core); and the fast preset to
-# l = 60 at mu_s = 0.5 with tolerance 1e-3, 1e-2 and 0.1 (~10 min). Writes accuracy.csv
+# Can the step tolerance be loosened? (docs/measurements.md "Speed of the elastic step", "The
+# tolerance cannot be loosened"). rho = 20, xi = 10, eps = 1e3, mu_s = 0 and 0.5, default numerics,
+# l = 30, tolerance 1e-3 (default) and 1e-2, seeds 1 and 2 (~40 min on one core); and the fast
+# preset to l = 60 at mu_s = 0.5 with tolerance 1e-3, 1e-2 and 0.1 (~10 min). Writes accuracy.csv
 # (wirepack accuracy over l in [5, 30]), summary.csv (steps, N, U_b_hat, K at l = 10, 20, 30, 60)
 # and, where python3-h5py is installed (scripts/install_paraview.sh installs it), contacts.csv:
 # segment pairs at the last snapshot closer than 2 r (1 + gap) for gaps 0 ... 0.2 r.

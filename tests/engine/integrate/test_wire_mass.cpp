@@ -174,7 +174,7 @@ TEST(WireMass, SlideAlongACircleHasNearPhysicalInertia) {
       EXPECT_NEAR(F / F_phys, 1.0, 0.05);
     } else {
       // On the sphere's radius: 1.9, where uniform scaling has 1400 (the limit of a Laplacian
-      // mass at this step size; README "Quasi-static regime").
+      // mass at this step size; docs/reference.md "Quasi-static regime").
       EXPECT_LT(F / F_phys, 2.0);
     }
   }
