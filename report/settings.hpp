@@ -60,10 +60,10 @@ bool is_order_parameter(const std::string& name);
 AnalysisSettings default_analysis_settings();
 
 // Applies an `analysis` block (keys D_window, fit_window, fit_windows, fit_auto, distribution_l,
-// histogram_bins, bootstrap_resamples, critical_ranges, order_parameter; see docs/reference.md) onto `s`.
-// `source` and `pointer` (the block's JSON pointer in that file) name it in messages: `SOURCE:
-// POINTER/D_window: rule (got
-// ...)`. Throws InputError listing every problem; unknown keys are errors.
+// histogram_bins, bootstrap_resamples, critical_ranges, order_parameter; see docs/reference.md)
+// onto `s`. `source` and `pointer` (the block's JSON pointer in that file) name it in
+// messages: `SOURCE: POINTER/D_window: rule (got ...)`. Throws InputError listing every
+// problem; unknown keys are errors.
 void apply_analysis_block(const nlohmann::json& block, const std::string& source,
                           const std::string& pointer, AnalysisSettings& s);
 
