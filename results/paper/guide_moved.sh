@@ -4,7 +4,7 @@
 # outside the hole became a contact body), the l where the two first differ
 # (first_difference.sh; "none": equal as far as both go; "same file": the pre-guide run file
 # itself was kept, so whether the guide changes it is known only from a rerun, listed in
-# results/paper/README.md) and the paper's statistics of both: D and D_chord maximised over the
+# results/paper/history.md) and the paper's statistics of both: D and D_chord maximised over the
 # figure's D window (from each commit's analysis/runs.csv).
 #   bash results/paper/guide_moved.sh [FIG...]      (default: fig5b fig5a fig4 fig1_3)
 # Writes results/paper/guide_moved.csv (through a temporary name) and prints it. Run

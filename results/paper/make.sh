@@ -1,9 +1,12 @@
 #!/usr/bin/env bash
 # The paper reproduction campaign (results/paper/README.md). From anywhere, after scripts/setup.sh:
-#   bash results/paper/make.sh status              runs done and left per figure (partial: runs
+#   bash results/paper/make.sh status [--readme]   runs done and left per figure (partial: runs
 #                                                  with a checkpoint to resume from, and the l each
 #                                                  has reached; the CPU hours left at the median
-#                                                  of its complete runs); runs nothing
+#                                                  of its complete runs); runs nothing; with
+#                                                  --readme also writes it into the README's
+#                                                  section "Status" (checked by
+#                                                  tests/golden/check_paper.sh)
 #   bash results/paper/make.sh run FIG[,FIG...] [THREADS]
 #                                                  runs or resumes the sweeps of the figures given
 #                                                  (fig5b, fig5a, fig4, fig1_3) in stages: every
@@ -32,12 +35,27 @@
 # of wall time here; commit them too), bitwise as if it had never been interrupted.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
-here=$root/results/paper
-wp=$root/build/wirepack
+# PAPER_DIR and WIREPACK let tests/golden/check_paper.sh run `status` on a copy of the campaign.
+here=${PAPER_DIR:-$root/results/paper}
+wp=${WIREPACK:-$root/build/wirepack}
 figs=(fig5b fig5a fig4 fig1_3)
 
 expected_files() {  # FIG -> the run files its sweep file asks for, one per line
   "$wp" validate "$here/$1/$1.sweep.json" | grep -o '"file": "[^"]*"' | cut -d'"' -f4
+}
+
+# megabytes DIR [EXCEPT]: the bytes of the files under DIR (but the file EXCEPT) in MB (10^6 B),
+# one decimal. File sizes, not disk blocks, so that the figure is the same on every file system
+# and in a copy; in a git checkout only the files git keeps or would add (not ignored ones).
+megabytes() {
+  local files
+  if git -C "$1" rev-parse --show-toplevel > /dev/null 2>&1; then
+    files=$(cd "$1" && git ls-files -co --exclude-standard .)
+  else
+    files=$(cd "$1" && find . -type f | sed 's|^\./||')
+  fi
+  (cd "$1" && grep -vx -- "${2:-}" <<< "$files" | tr '\n' '\0' | xargs -0 -r stat -c %s) |
+    awk '{ b += $1 } END { printf "%.1f MB", b / 1e6 }'
 }
 
 status() {
@@ -55,7 +73,7 @@ status() {
       failed=$(grep -c '"status": "failed"' "$here/$f/sweep/manifest.json" || true)
     fi
     local size="-"
-    [ -d "$here/$f/sweep" ] && size=$(du -sh "$here/$f/sweep" | cut -f1)
+    [ -d "$here/$f/sweep" ] && size=$(megabytes "$here/$f/sweep")
     # What is left, at the median wall time of the figure's complete runs (one core each; the
     # joblog's wall_s of a resumed run counts all its sittings); "?" before the first one.
     local cost="?"
@@ -71,8 +89,8 @@ status() {
     total_done=$((total_done + done))
     total=$((total + n))
   done
-  echo "all: $total_done of $total runs done; results/paper holds $(du -sh "$here" | cut -f1)" \
-    "(budget 150 MB)"
+  echo "all: $total_done of $total runs done; results/paper holds $(megabytes "$here" README.md)" \
+    "besides its README (budget 150 MB)"
   # How far each partial run is: the last l its checkpoint has recorded (wirepack export of a
   # checkpoint writes the series so far).
   local csv
@@ -206,9 +224,27 @@ pictures() {  # FIG [last]
   done
 }
 
+# The README's section "Status": what `status` prints, as a code block between the markers
+# <!-- status --> and <!-- /status --> (written through a temporary name).
+readme_status() {
+  local out readme=$here/README.md
+  out=$(status)
+  printf '%s\n' "$out"
+  grep -qx '<!-- status -->' "$readme" ||
+    { echo "make.sh: $readme has no <!-- status --> marker" >&2; exit 1; }
+  awk -v block="$out" '$0 == "<!-- /status -->" { skip = 0 }
+    !skip { print } $0 == "<!-- status -->" { print "```"; print block; print "```"; skip = 1 }' \
+    "$readme" > "$readme.tmp"
+  mv "$readme.tmp" "$readme"
+}
+
 cmd=${1:-status}
 case "$cmd" in
-  status) status ;;
+  status)
+    [ $# -le 2 ] && { [ $# -lt 2 ] || [ "$2" = --readme ]; } ||
+      { echo "usage: make.sh status [--readme]" >&2; exit 2; }
+    if [ "${2:-}" = --readme ]; then readme_status; else status; fi
+    ;;
   run)
     [ $# -ge 2 ] || { echo "usage: make.sh run FIG[,FIG...] [THREADS]" >&2; exit 2; }
     run "$2" "${3:-$(nproc)}"
@@ -231,7 +267,7 @@ case "$cmd" in
     pictures "$2" "${3:-all}"
     ;;
   *)
-    echo "usage: make.sh status | run FIG[,FIG...] [THREADS] | stop [FIG...] | analyze [FIG...] | cost [FIG...] | pictures FIG [last]" >&2
+    echo "usage: make.sh status [--readme] | run FIG[,FIG...] [THREADS] | stop [FIG...] | analyze [FIG...] | cost [FIG...] | pictures FIG [last]" >&2
     exit 2
     ;;
 esac

@@ -5,8 +5,8 @@
 # committed one, and so are a figure's tables along l (along_l.sh, rerun) and the sense blocks
 # of Figs. 5a and 5b (results/paper/reversals.csv, reversals.sh rerun), and the README's
 # generated sections are what their scripts make of those tables (table.sh: the comparison table
-# and Fig. 5's curves; reversals.sh: the sense-block tables). Exit 77 (skipped) while no figure
-# has both yet.
+# and Fig. 5's curves; reversals.sh: the sense-block tables; make.sh status: the status). Exit 77
+# (skipped) while no figure has both yet.
 # In a git checkout where results/paper differs from HEAD only in run data (FIG/sweep/...: a
 # campaign going on beside the tests, its tables not remade yet), HEAD's tables and run data are
 # checked (git archive), so the test does not fail on a working tree the campaign has moved on;
@@ -118,6 +118,20 @@ if grep -qx "<!-- table -->" "$paper/README.md"; then
     exit 1
   fi
   echo "results/paper/README.md: the comparison table and Fig. 5's curves match the tables"
+fi
+# The README's section "Status": what `make.sh status` prints of the same run data.
+if grep -qx "<!-- status -->" "$paper/README.md"; then
+  env WIREPACK="$wirepack" PAPER_DIR="$paper" bash "$2/results/paper/make.sh" status \
+    > "$tmp/status.out" 2> "$tmp/status.log" || { cat "$tmp/status.log"; exit 1; }
+  { echo '```'; cat "$tmp/status.out"; echo '```'; } > "$tmp/status.md"
+  if ! section "$paper/README.md" "<!-- status -->" "<!-- /status -->" |
+    diff - "$tmp/status.md" > "$tmp/status.diff"; then
+    head -20 "$tmp/status.diff"
+    echo "results/paper/README.md: the section \"Status\" is not what the run data give: rerun" \
+      "bash results/paper/make.sh status --readme"
+    exit 1
+  fi
+  echo "results/paper/README.md: the status matches the run data"
 fi
 if [ "$checked" = 0 ]; then
   echo "no figure of results/paper has run data and tables yet"
