@@ -8,6 +8,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "analysis/observables.hpp"
+#include "core/section.hpp"
 
 namespace wirepack::analysis {
 namespace {
@@ -265,8 +266,7 @@ std::size_t entry_chord_start(Centerline x, double r, double slack, std::size_t 
 
 // Paper: U_b_hat = U_b r^2 / (R E_w I), I = pi r^4 / 4 [-]; U_b [J], r, R [m], E_w [Pa].
 double bending_energy_hat(double U_b, double r, double R, double E_w) {
-  const double I = std::numbers::pi * std::pow(r, 4) / 4;
-  return U_b * r * r / (R * E_w * I);
+  return U_b * r * r / (R * E_w * section_second_moment(r));
 }
 
 }  // namespace wirepack::analysis

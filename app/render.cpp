@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "sweep/errors.hpp"
-#include "sweep/run_file.hpp"
+#include "sweep/runfile/run_file.hpp"
 
 extern char** environ;
 

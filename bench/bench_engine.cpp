@@ -19,11 +19,11 @@ using namespace wirepack;
 
 using bench::peak_rss_mib;
 
-RodState random_walk_rod(int n, bool twist) {
+State random_walk_rod(int n, bool twist) {
   std::mt19937_64 rng(3);
   std::normal_distribution<double> g(0.0, 1.0);
   const double ell = 0.5e-3;
-  RodState s;
+  State s;
   Vec3 dir(0, 0, 1);
   s.x.push_back(Vec3::Zero());
   for (int i = 1; i < n; ++i) {
@@ -45,12 +45,12 @@ RodState random_walk_rod(int n, bool twist) {
 void BM_ElasticForces(benchmark::State& state) {
   const bool twist = state.range(0) != 0;
   const int n = 2000;
-  RodState s = random_walk_rod(n, twist);
+  State s = random_walk_rod(n, twist);
   const RodMaterial m = RodMaterial::from(WireParams{});
   StretchTerm stretch(m.EA());
   BendTerm bend(m.EI());
   TwistTerm tw(m.GJ());
-  RodForces f;
+  Forces f;
   for (auto _ : state) {
     f.reset(s);
     double U = stretch.accumulate(s, f) + bend.accumulate(s, f);

@@ -16,9 +16,9 @@
 
 #include "bench/peak_memory.hpp"
 #include "engine/simulation.hpp"
-#include "sweep/run_checkpoint.hpp"
-#include "sweep/scene_config.hpp"
-#include "sweep/sweep_config.hpp"
+#include "sweep/config/scene_config.hpp"
+#include "sweep/config/sweep_config.hpp"
+#include "sweep/runfile/run_checkpoint.hpp"
 
 int main(int argc, char** argv) {
   using namespace wirepack;

@@ -13,8 +13,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "sweep/sweep_config.hpp"
-#include "sweep/sweep_runner.hpp"
+#include "sweep/config/sweep_config.hpp"
+#include "sweep/running/sweep_runner.hpp"
 
 namespace {
 

@@ -18,8 +18,8 @@ Feeder::Feeder(const FeederParams& p)
   L0_ = (n_inside0_ - 0.5) * p.element_length;
 }
 
-RodState Feeder::initial_state() const {
-  RodState s;
+State Feeder::initial_state() const {
+  State s;
   const double ell = p_.element_length;
   const int n = n_inside0_ + p_.guide_nodes;
   std::mt19937_64 rng(p_.seed);
@@ -48,7 +48,7 @@ RodState Feeder::initial_state() const {
   return s;
 }
 
-int Feeder::release(RodState& s) {
+int Feeder::release(State& s) {
   int released = 0;
   std::normal_distribution<double> gauss(0.0, 1.0);
   while (s.n_free < s.num_nodes() && s.x[s.n_free][2] > z_hole_) {

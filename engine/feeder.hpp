@@ -14,7 +14,7 @@
 #include <cstdint>
 #include <random>
 
-#include "engine/rod/rod_state.hpp"
+#include "engine/state.hpp"
 #include "engine/state_archive.hpp"
 
 namespace wirepack {
@@ -38,7 +38,7 @@ class Feeder {
  public:
   explicit Feeder(const FeederParams& p);
   // Builds the initial rod: free nodes inside, guide outside, all moving at v along +z.
-  RodState initial_state() const;
+  State initial_state() const;
   // Injected length at time t: L0 + v t [m].
   double injected_length(double t) const { return L0_ + p_.speed * t; }
   double z_hole() const { return z_hole_; }
@@ -46,7 +46,7 @@ class Feeder {
   // number of nodes released (0 if the DOF layout did not change). With a swivel the edge that
   // becomes free continues the spun wire: its angle makes the twist m_i at the new joint zero
   // and it spins with its neighbour, so no twist is created at release.
-  int release(RodState& s);
+  int release(State& s);
   // Checkpoints: the imperfections' random stream (everything else is set by the parameters).
   void save(StateWriter& out) const;
   void load(StateReader& in);

@@ -42,10 +42,11 @@ struct NumericsParams {
   DampingForm damping_form = DampingForm::Relative;
   EffectMode twist = EffectMode::Auto;
   EffectMode shell_self_contact = EffectMode::Auto;  // needs an elastic shell
-  // The shell's vertex masses are those of thickness max(t, min(c r, t rho_w / rho_s)), c this
-  // value in wire radii r (0: t), capped at a physical shell of the wire's density rho_w; its
-  // drag keeps the mass of thickness t (scene.hpp, shell_inertia_thickness) [-].
-  double shell_inertia_thickness = 1.0;
+  // c: the shell's vertex masses are those of thickness max(t, min(c r, t rho_w / rho_s)), c in
+  // wire radii r (0: t), capped at a physical shell of the wire's density rho_w; its drag keeps
+  // the mass of thickness t (scene.hpp, shell_mass_thickness). Scene key
+  // numerics/shell_inertia_thickness (kept: it is in run ids) [-].
+  double shell_inertia_factor = 1.0;
 };
 
 struct SceneParams {

@@ -15,13 +15,13 @@
 
 namespace wirepack {
 
-double shell_inertia_thickness(const SceneParams& p) {
+double shell_mass_thickness(const SceneParams& p) {
   const double t = p.R() / p.xi;
   const double q = p.numerics.quasistatic_ratio, v = p.injection_speed;
   const double rho_s = p.wire.youngs_modulus / p.eps * q * q / (v * v);  // [kg/m^3]
   // Never above the physical inertia, the shell taken at the wire's density (both polymers).
   const double t_physical = t * std::max(1.0, p.wire.density / rho_s);
-  return std::max(t, std::min(p.numerics.shell_inertia_thickness * p.wire.radius, t_physical));
+  return std::max(t, std::min(p.numerics.shell_inertia_factor * p.wire.radius, t_physical));
 }
 
 Assembly assemble(const SceneParams& p) {
@@ -133,11 +133,11 @@ Assembly assemble(const SceneParams& p) {
     // breathing period as long as the time to inject R, v / c_s ~ 0.3: a heavy shell that
     // lags the wire, where the paper's is quasistatic (v / c_s ~ 0.016).
     const double rho_s = sm.E * q * q / (v * v);
-    // Thin shells carry the inertia of thickness t_m = shell_inertia_thickness(p) >= t: up to
-    // c r (c = numerics.shell_inertia_thickness), never above the physical inertia. A contact
+    // Thin shells carry the inertia of thickness t_m = shell_mass_thickness(p) >= t: up to
+    // c r (c = numerics.shell_inertia_factor), never above the physical inertia. A contact
     // stiffens a vertex by ~2 E* sqrt(r delta) whatever t, while the membrane's stiffness and
     // the vertex mass go as t: below t ~ r the contacts, not the membrane waves, set the step.
-    const double t_mass = shell_inertia_thickness(p);
+    const double t_mass = shell_mass_thickness(p);
     a.vertex_mass.assign(mesh.num_vertices(), 0.0);
     for (const auto& f : mesh.faces) {
       const double area =

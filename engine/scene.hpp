@@ -64,10 +64,10 @@ struct Assembly {
 };
 
 // Thickness whose inertia the shell's vertices carry [m]: t_m = max(t, min(c r, t rho_w / rho_s))
-// with t = R / xi, c = numerics.shell_inertia_thickness, rho_s = E_s q^2 / v^2 the scaled
+// with t = R / xi, c = numerics.shell_inertia_factor, rho_s = E_s q^2 / v^2 the scaled
 // shell density and rho_w the wire's physical density: a thin shell (t < c r) gets heavier
 // vertices, but never heavier than a physical shell of the wire's density (scene.cpp).
-double shell_inertia_thickness(const SceneParams& p);
+double shell_mass_thickness(const SceneParams& p);
 
 // Throws std::invalid_argument for scenes this engine cannot simulate.
 Assembly assemble(const SceneParams& p);

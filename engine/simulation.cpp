@@ -20,8 +20,8 @@ struct Simulation::Impl {
   Feeder feeder;
   RodDamping damping;
   PredictorCorrector integrator;
-  RodState state;
-  RodForces forces;
+  State state;
+  Forces forces;
   std::vector<double> term_energy;  // per term, at the last evaluation [J]
   std::vector<double> term_omega2;  // per term, omega_max^2 at the last evaluation [1/s^2]
   double time = 0.0;
@@ -71,7 +71,7 @@ struct Simulation::Impl {
   // Kinetic energy of the wire (its first n_free nodes and their edges' twist) and the shell at
   // the current velocities [J].
   double kinetic_energy(int n_free) const {
-    const RodState& s = state;
+    const State& s = state;
     double E = assembly.mass.kinetic_energy(s.v, n_free);
     if (s.has_twist())
       E += assembly.twist_mass.kinetic_energy(s.omega, std::max(0, n_free - 1),
@@ -89,7 +89,7 @@ struct Simulation::Impl {
   }
 
   // Generalised accelerations of the dynamic DOFs; returns omega_max^2 [1/s^2].
-  double evaluate(RodState& s, Vec3List& a, std::vector<double>& alpha, Vec3List& shell_a) {
+  double evaluate(State& s, Vec3List& a, std::vector<double>& alpha, Vec3List& shell_a) {
     forces.reset(s);
     // Reference frames follow the new positions (twist only), from the tangents reset() found.
     update_reference_frames(s, forces);
@@ -132,13 +132,13 @@ struct Simulation::Impl {
   }
 
   EvaluateFn eval_fn() {
-    return [this](RodState& s, Vec3List& a, std::vector<double>& al, Vec3List& sa) {
+    return [this](State& s, Vec3List& a, std::vector<double>& al, Vec3List& sa) {
       return evaluate(s, a, al, sa);
     };
   }
   // The reference frames are updated inside evaluate(), which every position change precedes.
   static PositionsChangedFn moved_fn() {
-    return [](RodState&) {};
+    return [](State&) {};
   }
 
   // Accepts the history of the last evaluation (friction springs).

@@ -3,7 +3,7 @@
 // terms; an effect that is off is simply not in the list (docs/design.md §2.8, effects on demand).
 #include <string>
 
-#include "engine/rod/rod_state.hpp"
+#include "engine/state.hpp"
 #include "engine/state_archive.hpp"
 #include "engine/term_type.hpp"
 
@@ -33,9 +33,9 @@ class Term {
   virtual TermType type() const = 0;
   // Adds the generalised forces -dU/dq of this term into `out` and returns U [J].
   // May update caches of the term (contact lists, counters), hence non-const.
-  virtual double accumulate(const RodState& s, RodForces& out) = 0;
+  virtual double accumulate(const State& s, Forces& out) = 0;
   // Energy only (no forces); used by finite-difference checks. Must match accumulate().
-  virtual double energy(const RodState& s) = 0;
+  virtual double energy(const State& s) = 0;
   // Square of the highest angular frequency this term can excite at the state of the last
   // accumulate() [1/s^2]; bounds the explicit time step.
   virtual double omega_max_sq(const RodInertia& inertia) const = 0;

@@ -16,12 +16,12 @@
 #include "report/reductions.hpp"
 #include "report/sweep_dir.hpp"
 #include "sweep/atomic_file.hpp"
+#include "sweep/config/sweep_config.hpp"
 #include "sweep/errors.hpp"
 #include "sweep/format.hpp"
-#include "sweep/run_file.hpp"
-#include "sweep/series.hpp"
-#include "sweep/sweep_config.hpp"
-#include "sweep/sweep_manifest.hpp"
+#include "sweep/runfile/run_file.hpp"
+#include "sweep/runfile/series.hpp"
+#include "sweep/running/sweep_manifest.hpp"
 
 namespace wirepack::report {
 
@@ -146,8 +146,9 @@ void label_scenes(std::vector<Run>& runs) {
     for (const auto& k : varying) {
       const auto it = m.find(k);
       const std::string name = k.substr(k.rfind('/') + 1);
-      const std::string value = it == m.end()            ? "-"
-                                : it->second.is_number() ? num(it->second.get<double>())
+      const std::string value = it == m.end() ? "-"
+                                : it->second.is_number()
+                                    ? sweep::csv_number(it->second.get<double>())
                                 : it->second.is_string() ? it->second.get<std::string>()
                                                          : it->second.dump();
       label += (label.empty() ? "" : " ") + name + "=" + value;
@@ -212,16 +213,16 @@ std::string csv_text(const std::vector<Row>& rows, const LWindow& w) {
     const Run& ref = *row.ref;
     std::string label = r.label;
     if (label.find(',') != std::string::npos) label = "\"" + label + "\"";
-    out << label << ',' << r.seed << ',' << row.knob << ',' << num(row.value) << ','
+    out << label << ',' << r.seed << ',' << row.knob << ',' << sweep::csv_number(row.value) << ','
         << (row.run == row.ref ? 1 : 0);
-    for (const double k : r.knob) out << ',' << num(k);
-    out << ',' << num(r.l_end) << ',' << num(r.steps) << ',' << num(r.wall_s) << ','
-        << num(r.wall_s / ref.wall_s) << ',' << num(r.D_max) << ','
-        << num(std::abs(r.D_max - ref.D_max));
-    for (const double e : row.errs) out << ',' << num(e);
-    out << ',' << num(row.err_UK) << ',' << num(w.l_min) << ',' << num(row.l_to) << ','
-        << fs::path(r.file).filename().string() << ',' << fs::path(ref.file).filename().string()
-        << '\n';
+    for (const double k : r.knob) out << ',' << sweep::csv_number(k);
+    out << ',' << sweep::csv_number(r.l_end) << ',' << sweep::csv_number(r.steps) << ','
+        << sweep::csv_number(r.wall_s) << ',' << sweep::csv_number(r.wall_s / ref.wall_s) << ','
+        << sweep::csv_number(r.D_max) << ',' << sweep::csv_number(std::abs(r.D_max - ref.D_max));
+    for (const double e : row.errs) out << ',' << sweep::csv_number(e);
+    out << ',' << sweep::csv_number(row.err_UK) << ',' << sweep::csv_number(w.l_min) << ','
+        << sweep::csv_number(row.l_to) << ',' << fs::path(r.file).filename().string() << ','
+        << fs::path(ref.file).filename().string() << '\n';
   }
   return out.str();
 }

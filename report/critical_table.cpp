@@ -6,9 +6,9 @@
 #include <sstream>
 
 #include "report/csv_table.hpp"
+#include "sweep/config/sweep_config.hpp"
 #include "sweep/format.hpp"
-#include "sweep/sweep_config.hpp"
-#include "sweep/sweep_manifest.hpp"
+#include "sweep/running/sweep_manifest.hpp"
 
 namespace wirepack::report {
 
@@ -38,11 +38,13 @@ const json& param(const CriticalPoint& p, const std::string& ptr) {
 }  // namespace
 
 bool is_transition_axis(const std::string& pointer) {
-  return pointer == "/mu_s" || pointer == "/eps" || pointer == "/xi" || pointer == "/rho";
+  const sweep::KeySpec* spec = sweep::find_key(pointer);
+  return spec && spec->roles.transition;
 }
 
 bool fitted_in_log(const std::string& pointer) {
-  return pointer == "/eps";
+  const sweep::KeySpec* spec = sweep::find_key(pointer);
+  return spec && spec->roles.log_scale;
 }
 
 std::vector<analysis::CriticalSample> slice_samples(const CriticalSlice& slice,
@@ -96,7 +98,8 @@ std::vector<CriticalSlice> critical_slices(
     s.fit = analysis::fit_critical(slice_samples(s, points), s.options);
     if (s.range)
       s.fit.note += (s.fit.note.empty() ? "" : "; ") + std::string("fitted on [") +
-                    num(s.range->first) + ", " + num(s.range->second) + "] (critical_ranges)";
+                    sweep::csv_number(s.range->first) + ", " + sweep::csv_number(s.range->second) +
+                    "] (critical_ranges)";
     if (s.failed + s.missing > 0)
       s.fit.note += (s.fit.note.empty() ? "" : "; ") + std::to_string(s.failed) + " failed and " +
                     std::to_string(s.missing) + " missing run(s) left out";
@@ -121,7 +124,7 @@ std::string critical_csv(const std::vector<std::string>& axes,
     for (const auto& a : axes) {
       std::string c;
       for (const auto& [ptr, v] : s.at)
-        if (ptr == a) c = cell(v);
+        if (ptr == a) c = sweep::csv_cell(v);
       row.push_back(c);
     }
     const std::vector<std::string> rest = {s.options.log_x ? "log10" : "linear",
@@ -129,26 +132,26 @@ std::string critical_csv(const std::vector<std::string>& axes,
                                            std::to_string(f.values),
                                            std::to_string(s.failed),
                                            std::to_string(s.missing),
-                                           num(f.x_min),
-                                           num(f.x_max),
+                                           sweep::csv_number(f.x_min),
+                                           sweep::csv_number(f.x_max),
                                            csv_field(f.status),
                                            f.model,
                                            f.side > 0   ? "above"
                                            : f.side < 0 ? "below"
                                                         : "",
-                                           num(f.x_c),
-                                           num(f.x_c_lo),
-                                           num(f.x_c_hi),
-                                           num(f.b),
-                                           num(f.b_lo),
-                                           num(f.b_hi),
-                                           num(f.width),
-                                           num(f.D0),
-                                           num(f.D_plateau),
-                                           num(f.aic_continuous),
-                                           num(f.aic_smooth),
-                                           num(f.aic_constant),
-                                           num(f.aic_line),
+                                           sweep::csv_number(f.x_c),
+                                           sweep::csv_number(f.x_c_lo),
+                                           sweep::csv_number(f.x_c_hi),
+                                           sweep::csv_number(f.b),
+                                           sweep::csv_number(f.b_lo),
+                                           sweep::csv_number(f.b_hi),
+                                           sweep::csv_number(f.width),
+                                           sweep::csv_number(f.D0),
+                                           sweep::csv_number(f.D_plateau),
+                                           sweep::csv_number(f.aic_continuous),
+                                           sweep::csv_number(f.aic_smooth),
+                                           sweep::csv_number(f.aic_constant),
+                                           sweep::csv_number(f.aic_line),
                                            std::to_string(f.resamples),
                                            csv_field(f.note)};
     row.insert(row.end(), rest.begin(), rest.end());
@@ -168,9 +171,10 @@ std::string phase_diagram_csv(const std::vector<std::string>& axes,
       {"axis", "across", "across_value", "status", "model", "x_c", "x_c_lo", "x_c_hi", "note"});
   for (const auto& s : slices) {
     if (s.at.size() != 1) continue;
-    text += join_row({column_name(s.axis), column_name(s.at[0].first), cell(s.at[0].second),
-                      csv_field(s.fit.status), s.fit.model, num(s.fit.x_c), num(s.fit.x_c_lo),
-                      num(s.fit.x_c_hi), csv_field(s.fit.note)});
+    text += join_row({column_name(s.axis), column_name(s.at[0].first),
+                      sweep::csv_cell(s.at[0].second), csv_field(s.fit.status), s.fit.model,
+                      sweep::csv_number(s.fit.x_c), sweep::csv_number(s.fit.x_c_lo),
+                      sweep::csv_number(s.fit.x_c_hi), csv_field(s.fit.note)});
   }
   return text;
 }
@@ -228,12 +232,15 @@ std::vector<std::pair<std::string, std::string>> phase_diagram_plots(
     if (lo > 0 && hi >= 100 * lo) g << "set logscale x\n";
     if (fitted_in_log(axis)) g << "set logscale y\n";
     g << "$D << EOD\n";
-    for (const auto& r : heat) g << num(r[0]) << ' ' << num(r[1]) << ' ' << num(r[2]) << '\n';
+    for (const auto& r : heat)
+      g << sweep::csv_number(r[0]) << ' ' << sweep::csv_number(r[1]) << ' '
+        << sweep::csv_number(r[2]) << '\n';
     g << "EOD\n";
     if (!line.empty()) {
       g << "$C << EOD\n";
       for (const auto& r : line)
-        g << num(r[0]) << ' ' << num(r[1]) << ' ' << num(r[2]) << ' ' << num(r[3]) << '\n';
+        g << sweep::csv_number(r[0]) << ' ' << sweep::csv_number(r[1]) << ' '
+          << sweep::csv_number(r[2]) << ' ' << sweep::csv_number(r[3]) << '\n';
       g << "EOD\n";
     }
     g << "plot $D using 1:2:3 with points pointtype 5 pointsize 3 palette title \"D\"";

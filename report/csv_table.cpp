@@ -2,23 +2,16 @@
 
 #include <algorithm>
 
-#include "sweep/json_file.hpp"
-#include "sweep/sweep_config.hpp"
-#include "sweep/sweep_manifest.hpp"
+#include "sweep/config/json_file.hpp"
+#include "sweep/config/sweep_config.hpp"
+#include "sweep/running/sweep_manifest.hpp"
 
 namespace wirepack::report {
 
 using json = nlohmann::json;
 
-std::string num(double x) {
-  return sweep::csv_number(x);
-}
-std::string cell(const json& v) {
-  return sweep::csv_cell(v);
-}
-
 std::string text_of(const json& v) {
-  if (v.is_number()) return num(v.get<double>());
+  if (v.is_number()) return sweep::csv_number(v.get<double>());
   if (v.is_string()) return v.get<std::string>();
   return v.dump();
 }

@@ -9,12 +9,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "sweep/format.hpp"
+
 namespace wirepack::report {
 
-// A number as a CSV cell: shortest round-trip text, "nan" for NaN.
-std::string num(double x);
-// A parameter value as a CSV cell (numbers as numbers, strings quoted where needed, null empty).
-std::string cell(const nlohmann::json& v);
+// CSV cells are sweep/format.hpp's csv_number and csv_cell (one place for CSV text).
 // A value as text for plot titles ("0.5", "rigid").
 std::string text_of(const nlohmann::json& v);
 

@@ -32,7 +32,7 @@ std::string point_tag(std::size_t i, std::size_t points) {
 }
 
 std::string window_text(const LWindow& w) {
-  return "[" + num(w.l_min) + ", " + num(w.l_max) + "]";
+  return "[" + sweep::csv_number(w.l_min) + ", " + sweep::csv_number(w.l_max) + "]";
 }
 
 // The same with 3 significant digits, for plot keys.
@@ -237,8 +237,8 @@ PlotJob distribution_plot(const Analysis& a, std::size_t i, const std::array<Dis
         fit.rows.push_back({x, normal_pdf(x, d.fit.mu, d.fit.sigma), NaN});
       }
       panel.curves.push_back(fit);
-      panel.title = "mu = " + num(std::round(d.fit.mu * 1000) / 1000) +
-                    ", sigma = " + num(std::round(d.fit.sigma * 1000) / 1000);
+      panel.title = "mu = " + sweep::csv_number(std::round(d.fit.mu * 1000) / 1000) +
+                    ", sigma = " + sweep::csv_number(std::round(d.fit.sigma * 1000) / 1000);
     } else {
       panel.title = "no fit";
     }
@@ -246,12 +246,12 @@ PlotJob distribution_plot(const Analysis& a, std::size_t i, const std::array<Dis
   }
   PlotJob job;
   job.name = "distributions_" + point_tag(i, a.points.size());
-  job.script =
-      plots::script("Distributions at l = " + num(a.distribution_l) + " of grid point " +
-                        std::to_string(i) + " with lognormal fits; data: ../distributions.csv",
-                    "point " + std::to_string(i) + " at l = " + num(a.distribution_l) + ": " +
-                        describe(a.points[i], a.axes.empty() ? a.params : a.axes),
-                    panels, 1, 2, job.name + ".png", 1200, 500);
+  job.script = plots::script(
+      "Distributions at l = " + sweep::csv_number(a.distribution_l) + " of grid point " +
+          std::to_string(i) + " with lognormal fits; data: ../distributions.csv",
+      "point " + std::to_string(i) + " at l = " + sweep::csv_number(a.distribution_l) + ": " +
+          describe(a.points[i], a.axes.empty() ? a.params : a.axes),
+      panels, 1, 2, job.name + ".png", 1200, 500);
   return job;
 }
 
@@ -280,9 +280,10 @@ std::optional<PlotJob> packing_plot(const Analysis& a, std::size_t i, const Samp
   PlotJob job;
   job.name = "packing_" + point_tag(i, a.points.size());
   job.script = plots::script(
-      "The packing of grid point " + std::to_string(i) + " at l = " + num(a.distribution_l) +
+      "The packing of grid point " + std::to_string(i) +
+          " at l = " + sweep::csv_number(a.distribution_l) +
           " (the first run with a snapshot there), two projections, over the shell",
-      "point " + std::to_string(i) + " at l = " + num(a.distribution_l) + ": " +
+      "point " + std::to_string(i) + " at l = " + sweep::csv_number(a.distribution_l) + ": " +
           describe(a.points[i], a.axes.empty() ? a.params : a.axes),
       panels, 1, 2, job.name + ".png", 1000, 520);
   return job;

@@ -10,8 +10,9 @@
 
 #include "analysis/purohit.hpp"
 #include "analysis/scaling_window.hpp"
+#include "core/section.hpp"
 #include "report/csv_table.hpp"
-#include "sweep/sweep_config.hpp"
+#include "sweep/config/sweep_config.hpp"
 
 namespace wirepack::report {
 
@@ -107,8 +108,7 @@ void summarize_run(RunData& r, const AnalysisSettings& settings) {
   // EI = E_w pi r^4 / 4, U_b_hat = U_b r^2 / (R EI).
   const double wire_r = number_at(r.config, "/wire/radius");
   const double R = number_at(r.config, "/rho") * wire_r;
-  const double EI =
-      number_at(r.config, "/wire/youngs_modulus") * std::numbers::pi * std::pow(wire_r, 4) / 4;
+  const double EI = number_at(r.config, "/wire/youngs_modulus") * section_second_moment(wire_r);
   auto& Ub = r.series["U_b_hat_purohit"];
   auto& Kp = r.series["K_purohit"];
   Ub.assign(rows, NaN);
@@ -134,8 +134,7 @@ std::optional<std::size_t> snapshot_near(const std::vector<double>& ls, double l
 }
 
 const std::vector<std::string>& fixed_parameters() {
-  static const std::vector<std::string> p = {"/rho",  "/xi",    "/eps",  "/mu_s",
-                                             "/mu_d", "/l_max", "/shell"};
+  static const std::vector<std::string> p = sweep::keys_with(&sweep::KeySpec::Roles::column);
   return p;
 }
 
@@ -157,7 +156,7 @@ std::vector<std::string> swept_parameters(const std::vector<GridPoint>& points,
   if (sweep)
     for (const auto& axis : sweep->axes) add(axis.pointer);
   for (const auto& ptr : fixed_parameters()) add(ptr);
-  add("/injection_speed");
+  for (const auto& ptr : sweep::keys_with(&sweep::KeySpec::Roles::physical)) add(ptr);
   for (const auto& ptr : all) add(ptr);
 
   std::vector<std::string> kept;

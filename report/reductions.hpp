@@ -17,9 +17,9 @@
 #include "analysis/stats.hpp"
 #include "report/critical_table.hpp"
 #include "report/settings.hpp"
-#include "sweep/series.hpp"
-#include "sweep/sweep_config.hpp"
-#include "sweep/wire_profile.hpp"
+#include "sweep/config/sweep_config.hpp"
+#include "sweep/runfile/series.hpp"
+#include "sweep/runfile/wire_profile.hpp"
 
 namespace wirepack::report {
 

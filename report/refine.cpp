@@ -12,12 +12,12 @@
 #include "report/analyze.hpp"
 #include "report/critical_table.hpp"
 #include "sweep/atomic_file.hpp"
+#include "sweep/config/json_file.hpp"
+#include "sweep/config/sweep_config.hpp"
 #include "sweep/errors.hpp"
 #include "sweep/format.hpp"
-#include "sweep/json_file.hpp"
-#include "sweep/sweep_config.hpp"
-#include "sweep/sweep_manifest.hpp"
-#include "sweep/sweep_runner.hpp"
+#include "sweep/running/sweep_manifest.hpp"
+#include "sweep/running/sweep_runner.hpp"
 
 namespace wirepack::report {
 
@@ -132,15 +132,19 @@ RefineOutcome refine_sweep(const RefineOptions& o) {
       throw InputError("--axis: " + o.axis + " is not a swept transition parameter of " + o.dir +
                        " (swept: " + (valid.empty() ? "none" : valid) + ")");
     axis = wanted;
-  } else if (std::find(candidates.begin(), candidates.end(), "/mu_s") != candidates.end()) {
-    axis = "/mu_s";
+  } else if (const auto first = std::find_if(
+                 candidates.begin(), candidates.end(),
+                 [](const std::string& c) { return sweep::find_key(c)->roles.refine_first; });
+             first != candidates.end()) {
+    axis = *first;
   } else if (candidates.size() == 1) {
     axis = candidates[0];
   } else {
     throw InputError(
         o.dir + ": " +
         (candidates.empty()
-             ? "no transition parameter (mu_s, eps, xi, rho) is a grid axis"
+             ? "no transition parameter (" +
+                   sweep::key_names_with(&sweep::KeySpec::Roles::transition) + ") is a grid axis"
              : "several transition parameters are swept (" + valid + "): choose one with --axis"));
   }
   const GridAxis& grid_axis = *std::find_if(sw.axes.begin(), sw.axes.end(),

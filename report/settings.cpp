@@ -5,9 +5,10 @@
 #include <cstdlib>
 
 #include "report/critical_table.hpp"
+#include "sweep/config/json_file.hpp"
 #include "sweep/errors.hpp"
-#include "sweep/json_file.hpp"
-#include "sweep/sweep_manifest.hpp"
+#include "sweep/format.hpp"
+#include "sweep/running/sweep_manifest.hpp"
 
 namespace wirepack::report {
 
@@ -179,7 +180,8 @@ void apply_analysis_block(const json& block, const std::string& source, const st
       for (const auto& [name, value] : it->items()) {
         if (!is_transition_axis("/" + name)) {
           errors.push_back(source + ": " + pointer_child(ptr, name) +
-                           ": not a transition parameter; valid: mu_s, eps, xi, rho");
+                           ": not a transition parameter; valid: " +
+                           sweep::key_names_with(&sweep::KeySpec::Roles::transition));
         } else if (const auto r = range_from_json(value)) {
           s.critical_ranges["/" + name] = *r;
         } else {
@@ -255,10 +257,9 @@ void apply_flags(const AnalyzeOptions& o, AnalysisSettings& s) {
       b = to_double(text.substr(comma + 1));
     }
     if (eq == std::string::npos || !is_transition_axis("/" + name) || !a || !b || !(*a < *b))
-      throw InputError(
-          "--critical-range: must be NAME=X_MIN,X_MAX with NAME one of mu_s, eps, xi, rho and "
-          "X_MIN < X_MAX, e.g. mu_s=0,0.6 (got \"" +
-          text + "\")");
+      throw InputError("--critical-range: must be NAME=X_MIN,X_MAX with NAME one of " +
+                       sweep::key_names_with(&sweep::KeySpec::Roles::transition) +
+                       " and X_MIN < X_MAX, e.g. mu_s=0,0.6 (got \"" + text + "\")");
     s.critical_ranges["/" + name] = {*a, *b};
   }
   for (const auto& name : o.fit_auto) {

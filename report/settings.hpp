@@ -11,7 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "sweep/series.hpp"
+#include "sweep/runfile/series.hpp"
 
 namespace wirepack::report {
 

@@ -6,12 +6,12 @@
 #include <set>
 
 #include "analysis/distributions.hpp"
+#include "sweep/config/json_file.hpp"
+#include "sweep/config/scene_config.hpp"
+#include "sweep/config/sweep_config.hpp"
 #include "sweep/errors.hpp"
-#include "sweep/json_file.hpp"
-#include "sweep/run_file.hpp"
-#include "sweep/scene_config.hpp"
-#include "sweep/sweep_config.hpp"
-#include "sweep/sweep_manifest.hpp"
+#include "sweep/runfile/run_file.hpp"
+#include "sweep/running/sweep_manifest.hpp"
 
 namespace wirepack::report {
 

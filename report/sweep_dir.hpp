@@ -11,8 +11,8 @@
 
 #include "report/reductions.hpp"
 #include "report/settings.hpp"
-#include "sweep/run_file.hpp"
-#include "sweep/sweep_config.hpp"
+#include "sweep/config/sweep_config.hpp"
+#include "sweep/runfile/run_file.hpp"
 
 namespace wirepack::report {
 

@@ -2,7 +2,7 @@
 
 #include "analysis/stats.hpp"
 #include "report/csv_table.hpp"
-#include "sweep/sweep_manifest.hpp"
+#include "sweep/running/sweep_manifest.hpp"
 
 namespace wirepack::report {
 
@@ -12,13 +12,13 @@ namespace {
 
 std::vector<std::string> param_cells(const Analysis& a, const GridPoint& p) {
   std::vector<std::string> cells;
-  for (const auto& ptr : a.params) cells.push_back(cell(leaf(p, ptr)));
+  for (const auto& ptr : a.params) cells.push_back(sweep::csv_cell(leaf(p, ptr)));
   return cells;
 }
 
 std::vector<std::string> mean_sem_cells(std::span<const double> xs) {
   const auto m = analysis::mean_sem(xs);
-  return {num(m.mean), num(m.sem)};
+  return {sweep::csv_number(m.mean), sweep::csv_number(m.sem)};
 }
 
 // The run quantities averaged in curves.csv, with their accessors.
@@ -50,9 +50,12 @@ std::string runs_csv(const Analysis& a) {
         std::vector<std::string>{csv_field(r.file), r.point >= 0 ? std::to_string(r.point) : ""},
         params,
         std::vector<std::string>{
-            cell(r.seed), r.status, csv_field(r.reason), num(a.settings.D_window.l_min),
-            num(a.settings.D_window.l_max), num(r.D), num(r.D_avg), num(r.l_reached), num(r.wall_s),
-            num(r.U_b_hat), num(r.K), num(r.N), num(r.D_chord), num(r.D_kappa)}));
+            sweep::csv_cell(r.seed), r.status, csv_field(r.reason),
+            sweep::csv_number(a.settings.D_window.l_min),
+            sweep::csv_number(a.settings.D_window.l_max), sweep::csv_number(r.D),
+            sweep::csv_number(r.D_avg), sweep::csv_number(r.l_reached), sweep::csv_number(r.wall_s),
+            sweep::csv_number(r.U_b_hat), sweep::csv_number(r.K), sweep::csv_number(r.N),
+            sweep::csv_number(r.D_chord), sweep::csv_number(r.D_kappa)}));
   }
   return t.text();
 }
@@ -72,8 +75,8 @@ std::string curves_csv(const Analysis& a) {
         cat(std::vector<std::string>{std::to_string(i)}, param_cells(a, p));
     for (const std::size_t n : {p.complete.size(), p.failed, p.missing})
       row.push_back(std::to_string(n));
-    row.push_back(num(a.settings.D_window.l_min));
-    row.push_back(num(a.settings.D_window.l_max));
+    row.push_back(sweep::csv_number(a.settings.D_window.l_min));
+    row.push_back(sweep::csv_number(a.settings.D_window.l_max));
     for (const auto& [name, field] : curve_quantities())
       for (auto& c : mean_sem_cells(values(p, field))) row.push_back(std::move(c));
     t.add(row);
@@ -93,18 +96,19 @@ std::string view_csv(const Analysis& a, const View& v) {
   for (const std::size_t i : v.order) {
     const GridPoint& p = a.points[i];
     std::vector<std::string> row;
-    for (const auto& o : v.others) row.push_back(cell(leaf(p, o)));
-    row.push_back(cell(leaf(p, v.pointer)));
+    for (const auto& o : v.others) row.push_back(sweep::csv_cell(leaf(p, o)));
+    row.push_back(sweep::csv_cell(leaf(p, v.pointer)));
     row.push_back(std::to_string(p.complete.size()));
     for (auto& c : mean_sem_cells(values(p, &RunData::D))) row.push_back(std::move(c));
-    row.push_back(num(a.settings.D_window.l_min));
-    row.push_back(num(a.settings.D_window.l_max));
+    row.push_back(sweep::csv_number(a.settings.D_window.l_min));
+    row.push_back(sweep::csv_number(a.settings.D_window.l_max));
     for (const auto field : {&RunData::D_chord, &RunData::D_kappa})
       for (auto& c : mean_sem_cells(values(p, field))) row.push_back(std::move(c));
     // Decorrelation of the seeds: the spread (SD) and the distinct outcomes (values more than
     // 0.01 apart) of each variant; ten seeds of one trajectory give SD ~ 0 and one outcome.
     const auto variants = {&RunData::D, &RunData::D_chord, &RunData::D_kappa};
-    for (const auto field : variants) row.push_back(num(analysis::mean_sem(values(p, field)).sd));
+    for (const auto field : variants)
+      row.push_back(sweep::csv_number(analysis::mean_sem(values(p, field)).sd));
     for (const auto field : variants)
       row.push_back(std::to_string(analysis::distinct_outcomes(values(p, field))));
     t.add(row);
@@ -126,9 +130,11 @@ std::string exponents_csv(const Analysis& a, const Fits& fits) {
       const bool boot = use_bootstrap(f);
       t.add(cat(std::vector<std::string>{std::to_string(i)}, param_cells(a, a.points[i]),
                 std::vector<std::string>{
-                    spec.name, spec.series, num(f.fit.exponent), num(reported_stderr(f)),
-                    num(f.fit.stderr_), num(f.stderr_bootstrap), num(f.fit.log_prefactor),
-                    num(w.l_min), num(w.l_max), num(f.fit.l_min), num(f.fit.l_max),
+                    spec.name, spec.series, sweep::csv_number(f.fit.exponent),
+                    sweep::csv_number(reported_stderr(f)), sweep::csv_number(f.fit.stderr_),
+                    sweep::csv_number(f.stderr_bootstrap), sweep::csv_number(f.fit.log_prefactor),
+                    sweep::csv_number(w.l_min), sweep::csv_number(w.l_max),
+                    sweep::csv_number(f.fit.l_min), sweep::csv_number(f.fit.l_max),
                     std::to_string(f.fit.n_points), std::to_string(f.seeds),
                     std::string(f.auto_window ? "auto-log" : "ols") + (boot ? "+bootstrap" : ""),
                     f.fit.ok ? "true" : "false"}));
@@ -152,10 +158,10 @@ std::string series_csv(const Analysis& a, const std::vector<MeanSeries>& ms) {
     for (std::size_t j = 0; j < m.l.size(); ++j) {
       std::vector<std::string> row =
           cat(std::vector<std::string>{std::to_string(i)}, params,
-              std::vector<std::string>{num(m.l[j]), std::to_string(m.n[j])});
+              std::vector<std::string>{sweep::csv_number(m.l[j]), std::to_string(m.n[j])});
       for (const auto& name : names) {
-        row.push_back(num(m.q.at(name)[j].mean));
-        row.push_back(num(m.q.at(name)[j].sem));
+        row.push_back(sweep::csv_number(m.q.at(name)[j].mean));
+        row.push_back(sweep::csv_number(m.q.at(name)[j].sem));
       }
       t.add(row);
     }
@@ -173,16 +179,17 @@ std::string distributions_csv(const Analysis& a, const std::vector<Samples>& sam
     const auto params = param_cells(a, a.points[i]);
     for (const Distribution& d : ds[i]) {
       const std::vector<std::string> fit = {d.quantity,
-                                            num(a.distribution_l),
+                                            sweep::csv_number(a.distribution_l),
                                             std::to_string(samples[i].runs),
                                             std::to_string(d.fit.n),
-                                            num(d.fit.mu),
-                                            num(d.fit.mu_stderr),
-                                            num(d.fit.sigma),
-                                            num(d.fit.sigma_stderr),
+                                            sweep::csv_number(d.fit.mu),
+                                            sweep::csv_number(d.fit.mu_stderr),
+                                            sweep::csv_number(d.fit.sigma),
+                                            sweep::csv_number(d.fit.sigma_stderr),
                                             d.fit.ok ? "true" : "false"};
       const auto head = cat(std::vector<std::string>{std::to_string(i)}, params, fit);
-      const std::vector<std::string> ls = {num(d.ls_fit.mu), num(d.ls_fit.sigma),
+      const std::vector<std::string> ls = {sweep::csv_number(d.ls_fit.mu),
+                                           sweep::csv_number(d.ls_fit.sigma),
                                            d.ls_fit.ok ? "true" : "false"};
       if (d.hist.lo.empty()) {
         t.add(cat(head, std::vector<std::string>{"", "nan", "nan", "0", "nan", "nan"}, ls));
@@ -190,9 +197,10 @@ std::string distributions_csv(const Analysis& a, const std::vector<Samples>& sam
       }
       for (std::size_t b = 0; b < d.hist.lo.size(); ++b)
         t.add(cat(head,
-                  std::vector<std::string>{std::to_string(b), num(d.hist.lo[b]), num(d.hist.hi[b]),
-                                           std::to_string(d.hist.count[b]), num(d.hist.density[b]),
-                                           num(d.fit_density[b])},
+                  std::vector<std::string>{
+                      std::to_string(b), sweep::csv_number(d.hist.lo[b]),
+                      sweep::csv_number(d.hist.hi[b]), std::to_string(d.hist.count[b]),
+                      sweep::csv_number(d.hist.density[b]), sweep::csv_number(d.fit_density[b])},
                   ls));
     }
   }
@@ -207,10 +215,11 @@ std::string loop_sensitivity_csv(const Analysis& a, const std::vector<Samples>& 
     for (const auto& row : samples[i].loop_sensitivity)
       t.add(cat(std::vector<std::string>{std::to_string(i)}, param_cells(a, a.points[i]),
                 std::vector<std::string>{
-                    num(a.distribution_l), std::to_string(samples[i].runs), num(row.smoothing_r),
-                    num(row.min_prominence), std::to_string(row.loops), num(row.fit.mu),
-                    num(row.fit.mu_stderr), num(row.fit.sigma), num(row.fit.sigma_stderr),
-                    row.fit.ok ? "true" : "false"}));
+                    sweep::csv_number(a.distribution_l), std::to_string(samples[i].runs),
+                    sweep::csv_number(row.smoothing_r), sweep::csv_number(row.min_prominence),
+                    std::to_string(row.loops), sweep::csv_number(row.fit.mu),
+                    sweep::csv_number(row.fit.mu_stderr), sweep::csv_number(row.fit.sigma),
+                    sweep::csv_number(row.fit.sigma_stderr), row.fit.ok ? "true" : "false"}));
   }
   return t.text();
 }
@@ -221,13 +230,14 @@ std::string morphology_csv(const Analysis& a, const std::vector<Samples>& sample
                                        "reversals", "order_length_R", "min_block_R"}));
   for (std::size_t i = 0; i < a.points.size(); ++i)
     for (const auto& o : samples[i].orders)
-      t.add(cat(
-          std::vector<std::string>{csv_field(o.run->file), std::to_string(i)},
-          param_cells(a, a.points[i]),
-          std::vector<std::string>{cell(o.run->seed), num(o.l), num(o.order.D),
-                                   num(o.order.D_chord), num(o.order.D_kappa),
-                                   num(o.order.chord_length_R), std::to_string(o.order.reversals),
-                                   num(o.order.order_length_R), num(sweep::kMinSenseBlock_R)}));
+      t.add(cat(std::vector<std::string>{csv_field(o.run->file), std::to_string(i)},
+                param_cells(a, a.points[i]),
+                std::vector<std::string>{
+                    sweep::csv_cell(o.run->seed), sweep::csv_number(o.l),
+                    sweep::csv_number(o.order.D), sweep::csv_number(o.order.D_chord),
+                    sweep::csv_number(o.order.D_kappa), sweep::csv_number(o.order.chord_length_R),
+                    std::to_string(o.order.reversals), sweep::csv_number(o.order.order_length_R),
+                    sweep::csv_number(sweep::kMinSenseBlock_R)}));
   return t.text();
 }
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "sweep/run_file.hpp"
+#include "sweep/runfile/run_file.hpp"
 
 namespace wirepack::report {
 

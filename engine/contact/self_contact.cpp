@@ -5,7 +5,7 @@
 #include <limits>
 
 #include "engine/contact/segment_distance.hpp"
-#include "engine/contact/verlet_slack.hpp"
+#include "engine/contact/verlet.hpp"
 
 namespace wirepack {
 
@@ -16,27 +16,17 @@ SelfContactTerm::SelfContactTerm(const SelfContactParams& p)
   exclude_ = std::max(exclude_, 1);
 }
 
-void SelfContactTerm::maybe_rebuild(const RodState& s) {
+void SelfContactTerm::maybe_rebuild(const State& s) {
   const int ne = active_edges(s);
-  bool need = ne != edges_at_build_;
-  if (!need) {
-    const double limit2 = 0.25 * p_.skin * p_.skin;
-    const int nn = std::min(ne + 1, s.num_nodes());
-    moved2_.resize(nn);
-    for (int i = 0; i < nn && !need; ++i) {
-      moved2_[i] = (s.x[i] - x_at_build_[i]).squaredNorm();
-      need = moved2_[i] > limit2;
-    }
-  }
-  if (need) rebuild(s);
+  if (ne != edges_at_build_ || ref_.moved_beyond(s.x, std::min(ne + 1, s.num_nodes()), p_.skin))
+    rebuild(s);
 }
 
-void SelfContactTerm::rebuild(const RodState& s) {
+void SelfContactTerm::rebuild(const State& s) {
   const int ne = active_edges(s);
   ++rebuilds_;
   edges_at_build_ = ne;
-  x_at_build_.assign(s.x.begin(), s.x.begin() + std::min(ne + 1, s.num_nodes()));
-  moved2_.assign(x_at_build_.size(), 0.0);
+  ref_.build(s.x, std::min(ne + 1, s.num_nodes()));
   candidates_.clear();
   if (ne < 2) return;
   midpoints_.resize(ne);
@@ -66,7 +56,7 @@ void SelfContactTerm::rebuild(const RodState& s) {
   }
 }
 
-double SelfContactTerm::evaluate(const RodState& s, RodForces* out) {
+double SelfContactTerm::evaluate(const State& s, Forces* out) {
   maybe_rebuild(s);
   const double contact = 2.0 * p_.r;
   const double m_eff = 0.5 * p_.node_mass;
@@ -79,8 +69,8 @@ double SelfContactTerm::evaluate(const RodState& s, RodForces* out) {
   for (int k = 0; k < nc; ++k) {
     const int a = candidates_[k].a, b = candidates_[k].b;
     // Cannot touch yet: each end moved less than half the slack since the build.
-    const double moved2 =
-        std::max(std::max(moved2_[a], moved2_[a + 1]), std::max(moved2_[b], moved2_[b + 1]));
+    const double moved2 = std::max(std::max(ref_.moved2[a], ref_.moved2[a + 1]),
+                                   std::max(ref_.moved2[b], ref_.moved2[b + 1]));
     if (moved2 < candidates_[k].slack2_4) {
       geo_[k].dist2 = std::numeric_limits<double>::infinity();
       continue;
@@ -119,7 +109,7 @@ double SelfContactTerm::evaluate(const RodState& s, RodForces* out) {
   return U;
 }
 
-double SelfContactTerm::accumulate(const RodState& s, RodForces& out) {
+double SelfContactTerm::accumulate(const State& s, Forces& out) {
   const double U = evaluate(s, &out);
   double kmax = 0.0;
   for (const WireContact& c : contacts_) kmax = std::max(kmax, hertz_.stiffness(c.delta));
@@ -176,7 +166,7 @@ double SelfContactTerm::accumulate(const RodState& s, RodForces& out) {
   return U;
 }
 
-double SelfContactTerm::energy(const RodState& s) {
+double SelfContactTerm::energy(const State& s) {
   return evaluate(s, nullptr);
 }
 
@@ -190,7 +180,7 @@ void SelfContactTerm::serialize(Self& t, Archive& ar) {
   ar.tag("SELF");
   ar(t.edges_at_build_);
   ar(t.rebuilds_);
-  ar(t.x_at_build_);
+  ar(t.ref_.at_build);
   ar(t.candidates_);
   serialize_friction(ar, t.friction_.get());
 }

@@ -24,6 +24,7 @@
 #include "engine/contact/frictional_term.hpp"
 #include "engine/contact/hertz.hpp"
 #include "engine/contact/segment_distance.hpp"
+#include "engine/contact/verlet.hpp"
 #include "engine/term.hpp"
 
 namespace wirepack {
@@ -53,8 +54,8 @@ class SelfContactTerm : public FrictionalTerm {
   explicit SelfContactTerm(const SelfContactParams& p);
   std::string name() const override { return "self_contact"; }
   TermType type() const override { return TermType::kSelfContact; }
-  double accumulate(const RodState& s, RodForces& out) override;
-  double energy(const RodState& s) override;
+  double accumulate(const State& s, Forces& out) override;
+  double energy(const State& s) override;
   double omega_max_sq(const RodInertia& inertia) const override;
 
   // N of docs/design.md §5.2: touching edge pairs.
@@ -76,11 +77,11 @@ class SelfContactTerm : public FrictionalTerm {
   template <class Self, class Archive>
   static void serialize(Self& term, Archive& ar);
   // Number of edges that take part: those with at least one dynamic node.
-  static int active_edges(const RodState& s) { return std::min(s.n_free, s.num_edges()); }
-  void maybe_rebuild(const RodState& s);
+  static int active_edges(const State& s) { return std::min(s.n_free, s.num_edges()); }
+  void maybe_rebuild(const State& s);
   // Energy of all touching pairs; with `out`, also forces and the contact list.
-  double evaluate(const RodState& s, RodForces* out);
-  void rebuild(const RodState& s);
+  double evaluate(const State& s, Forces* out);
+  void rebuild(const State& s);
 
   SelfContactParams p_;
   Hertz hertz_;
@@ -99,8 +100,7 @@ class SelfContactTerm : public FrictionalTerm {
   // Closest points per candidate of the last evaluation (dist2 infinite when skipped by its
   // slack), and per broad-phase pair of the last build: computed in parallel, used in order.
   std::vector<SegmentClosest> geo_, broad_geo_;
-  Vec3List x_at_build_;
-  std::vector<double> moved2_;  // |x - x_at_build|^2 per node at the last check [m^2]
+  VerletReference ref_;  // the nodes at the list's build and their moves since
   int edges_at_build_ = -1;
   long rebuilds_ = 0;
   std::vector<WireContact> contacts_;

@@ -99,26 +99,14 @@ bool ShellSelfContactTerm::kept(int v, int f) const {
   return c.dist2 >= ex * ex;
 }
 
-void ShellSelfContactTerm::maybe_rebuild(const RodState& s) {
-  const size_t n = s.shell_x.size();
-  if (x_at_build_.size() != n) {
+void ShellSelfContactTerm::maybe_rebuild(const State& s) {
+  // The largest move without early exit: the whole list is scanned at rest anyway.
+  if (ref_.at_build.size() != s.shell_x.size() ||
+      ref_.max_moved2(s.shell_x) > 0.25 * p_.skin * p_.skin)
     rebuild(s);
-    return;
-  }
-  // The largest squared displacement since the build, without early exit (the whole list is
-  // scanned at rest anyway, and a branch-free loop over the coordinates vectorises).
-  const double* a = n ? s.shell_x.front().data() : nullptr;
-  const double* b = n ? x_at_build_.front().data() : nullptr;
-  double worst = 0.0;
-  for (size_t k = 0; k < n; ++k) {
-    const double dx = a[3 * k] - b[3 * k], dy = a[3 * k + 1] - b[3 * k + 1],
-                 dz = a[3 * k + 2] - b[3 * k + 2];
-    worst = std::max(worst, dx * dx + dy * dy + dz * dz);
-  }
-  if (worst > 0.25 * p_.skin * p_.skin) rebuild(s);
 }
 
-void ShellSelfContactTerm::rebuild(const RodState& s) {
+void ShellSelfContactTerm::rebuild(const State& s) {
   const int nv = mesh_.num_vertices(), nf = mesh_.num_faces();
   const int ne = static_cast<int>(mesh_.edges.size());
   const Vec3List& x = s.shell_x;
@@ -126,7 +114,7 @@ void ShellSelfContactTerm::rebuild(const RodState& s) {
     throw std::invalid_argument("ShellSelfContactTerm: state and mesh sizes differ");
   }
   ++rebuilds_;
-  x_at_build_ = x;
+  ref_.build(x, x.size());
   vt_faces_.clear();
   vt_edges_.clear();
   vt_verts_.clear();
@@ -224,7 +212,7 @@ int ShellSelfContactTerm::find_face_pair(int v, int f) const {
              : -1;
 }
 
-double ShellSelfContactTerm::evaluate(const RodState& s, RodForces* out) {
+double ShellSelfContactTerm::evaluate(const State& s, Forces* out) {
   maybe_rebuild(s);
   const Vec3List& x = s.shell_x;
   const double m_eff = 0.5 * p_.vertex_mass;  // two vertices of equal mass
@@ -352,7 +340,7 @@ double ShellSelfContactTerm::evaluate(const RodState& s, RodForces* out) {
   return U;
 }
 
-double ShellSelfContactTerm::accumulate(const RodState& s, RodForces& out) {
+double ShellSelfContactTerm::accumulate(const State& s, Forces& out) {
   const double U = evaluate(s, &out);
   max_row_stiffness_ = 0.0;
   for (int v : touched_) max_row_stiffness_ = std::max(max_row_stiffness_, row_stiffness_[v]);
@@ -426,13 +414,13 @@ template <class Self, class Archive>
 void ShellSelfContactTerm::serialize(Self& t, Archive& ar) {
   ar.tag("SSLF");
   ar(t.rebuilds_);
-  ar(t.x_at_build_);
+  ar(t.ref_.at_build);
   ar(t.vt_faces_);
   ar(t.vt_edges_);
   ar(t.vt_verts_);
   ar(t.ee_);
-  if (!t.x_at_build_.empty() &&
-      t.x_at_build_.size() != static_cast<std::size_t>(t.mesh_.num_vertices()))
+  if (!t.ref_.at_build.empty() &&
+      t.ref_.at_build.size() != static_cast<std::size_t>(t.mesh_.num_vertices()))
     ar.fail("shell self-contact of another mesh");
   serialize_friction(ar, t.friction_.get());
 }

@@ -55,6 +55,7 @@
 #include "engine/contact/friction.hpp"
 #include "engine/contact/frictional_term.hpp"
 #include "engine/contact/hertz.hpp"
+#include "engine/contact/verlet.hpp"
 #include "engine/shell/shell_term.hpp"
 #include "engine/term.hpp"
 
@@ -79,8 +80,8 @@ class ShellSelfContactTerm : public FrictionalTerm {
   std::string name() const override { return "shell_self"; }
   TermType type() const override { return TermType::kShellSelf; }
   DofGroup dofs() const override { return DofGroup::kShell; }
-  double accumulate(const RodState& s, RodForces& out) override;
-  double energy(const RodState& s) override { return evaluate(s, nullptr); }
+  double accumulate(const State& s, Forces& out) override;
+  double energy(const State& s) override { return evaluate(s, nullptr); }
   double omega_max_sq(const RodInertia& inertia) const override;
   void save(StateWriter& out) const override;
   void load(StateReader& in) override;
@@ -134,9 +135,9 @@ class ShellSelfContactTerm : public FrictionalTerm {
     double c;
   };
 
-  double evaluate(const RodState& s, RodForces* out);
-  void maybe_rebuild(const RodState& s);
-  void rebuild(const RodState& s);
+  double evaluate(const State& s, Forces* out);
+  void maybe_rebuild(const State& s);
+  void rebuild(const State& s);
   // Rest distance of vertex v to face f is at least the exclusion.
   bool kept(int v, int f) const;
   int find_face_pair(int v, int f) const;
@@ -156,7 +157,7 @@ class ShellSelfContactTerm : public FrictionalTerm {
   CellGrid grid_vt_, grid_ee_;
   Vec3List points_;
   std::vector<std::pair<int, int>> broad_;
-  Vec3List x_at_build_;
+  VerletReference ref_;  // the vertices at the list's build
   long rebuilds_ = 0;
   // Verlet lists: (v, f) sorted; (v, edge) sorted; vertex pieces sorted by (v, u); (e1, e2).
   std::vector<std::pair<int, int>> vt_faces_;

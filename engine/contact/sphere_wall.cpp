@@ -41,7 +41,7 @@ bool SphereWallTerm::overlap(const Vec3& x, double& delta, Vec3& normal, bool& r
   return true;
 }
 
-double SphereWallTerm::accumulate(const RodState& s, RodForces& out) {
+double SphereWallTerm::accumulate(const State& s, Forces& out) {
   double U = 0.0;
   touching_.clear();
   for (int i = 0; i < s.n_free; ++i) {
@@ -96,7 +96,7 @@ double SphereWallTerm::accumulate(const RodState& s, RodForces& out) {
   return U;
 }
 
-double SphereWallTerm::energy(const RodState& s) {
+double SphereWallTerm::energy(const State& s) {
   double U = 0.0;
   for (int i = 0; i < s.n_free; ++i) {
     double delta;

@@ -28,8 +28,8 @@ class SphereWallTerm : public FrictionalTerm {
   explicit SphereWallTerm(const SphereWallParams& p);
   std::string name() const override { return "wall"; }
   TermType type() const override { return TermType::kWall; }
-  double accumulate(const RodState& s, RodForces& out) override;
-  double energy(const RodState& s) override;
+  double accumulate(const State& s, Forces& out) override;
+  double energy(const State& s) override;
   double omega_max_sq(const RodInertia& inertia) const override;
   int contacts() const { return contacts_; }  // nodes touching the wall at the last accumulate
   // Largest overlap delta of a node with the wall at the last accumulate (0 when none

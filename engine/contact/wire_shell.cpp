@@ -7,7 +7,7 @@
 
 #include "engine/contact/segment_distance.hpp"
 #include "engine/contact/triangle_distance.hpp"
-#include "engine/contact/verlet_slack.hpp"
+#include "engine/contact/verlet.hpp"
 
 namespace wirepack {
 
@@ -88,7 +88,7 @@ void WireShellTerm::rebuild_guide(const Vec3List& xs, const Vec3& top) {
   }
 }
 
-double WireShellTerm::guide_evaluate(const RodState& s, RodForces* out) {
+double WireShellTerm::guide_evaluate(const State& s, Forces* out) {
   guide_contacts_ = 0;
   guide_max_overlap_ = 0.0;
   guide_max_stiffness_ = 0.0;
@@ -157,36 +157,22 @@ double WireShellTerm::guide_evaluate(const RodState& s, RodForces* out) {
   return U;
 }
 
-void WireShellTerm::maybe_rebuild(const RodState& s) {
+void WireShellTerm::maybe_rebuild(const State& s) {
   const int ne = active_edges(s);
-  bool need = ne != edges_at_build_;
-  const double limit2 = 0.25 * p_.skin * p_.skin;
-  if (!need) {
-    const int nn = std::min(ne + 1, s.num_nodes());
-    moved2_.resize(nn);
-    shell_moved2_.resize(s.shell_x.size());
-    for (int i = 0; i < nn && !need; ++i) {
-      moved2_[i] = (s.x[i] - x_at_build_[i]).squaredNorm();
-      need = moved2_[i] > limit2;
-    }
-    for (size_t k = 0; k < s.shell_x.size() && !need; ++k) {
-      shell_moved2_[k] = (s.shell_x[k] - shell_at_build_[k]).squaredNorm();
-      need = shell_moved2_[k] > limit2;
-    }
-  }
-  if (need) rebuild(s);
+  if (ne != edges_at_build_ ||
+      wire_ref_.moved_beyond(s.x, std::min(ne + 1, s.num_nodes()), p_.skin) ||
+      shell_ref_.moved_beyond(s.shell_x, s.shell_x.size(), p_.skin))
+    rebuild(s);
 }
 
-void WireShellTerm::rebuild(const RodState& s) {
+void WireShellTerm::rebuild(const State& s) {
   const int ne = active_edges(s);
   const int nf = mesh_.num_faces();
   ++rebuilds_;
   edges_at_build_ = ne;
-  x_at_build_.assign(s.x.begin(), s.x.begin() + std::min(ne + 1, s.num_nodes()));
-  shell_at_build_ = s.shell_x;
-  moved2_.assign(x_at_build_.size(), 0.0);
-  shell_moved2_.assign(shell_at_build_.size(), 0.0);
-  if (!x_at_build_.empty()) rebuild_guide(shell_at_build_, x_at_build_.back());
+  wire_ref_.build(s.x, std::min(ne + 1, s.num_nodes()));
+  shell_ref_.build(s.shell_x, s.shell_x.size());
+  if (!wire_ref_.at_build.empty()) rebuild_guide(shell_ref_.at_build, wire_ref_.at_build.back());
   candidates_.clear();
   seg_edge_.clear();
   seg_vert_.clear();
@@ -212,7 +198,7 @@ void WireShellTerm::rebuild(const RodState& s) {
   const double Dc = p_.r + p_.half_thickness;
   const double reach = Dc + p_.skin;
   grid_.find_pairs_between(points_, ne, 0.5 * lmax + face_reach_ + reach, broad_);
-  // (wire edge, face) pairs within reach with their slack (verlet_slack.hpp), sorted by pair
+  // (wire edge, face) pairs within reach with their slack (verlet.hpp), sorted by pair
   // (the broad phase lists its pairs in (i, j) order).
   // Distances in parallel (one entry per broad pair), the list in the broad phase's order.
   const int nb = static_cast<int>(broad_.size());
@@ -329,7 +315,7 @@ struct Piece {
 
 }  // namespace
 
-double WireShellTerm::evaluate(const RodState& s, RodForces* out) {
+double WireShellTerm::evaluate(const State& s, Forces* out) {
   maybe_rebuild(s);
   const double Dc = p_.r + p_.half_thickness;
   const double m_eff = 1.0 / (1.0 / p_.node_mass + 1.0 / p_.vertex_mass);
@@ -381,7 +367,9 @@ double WireShellTerm::evaluate(const RodState& s, RodForces* out) {
   // entry): the closest points of the (wire edge, face), (wire edge, shell edge) and (wire
   // edge, shell vertex) pairs that can touch, and the contacts of those that do. The forces are
   // then added serially in pair order, so the sums do not depend on the threads.
-  const auto wire_moved2 = [&](int e) { return std::max(moved2_[e], moved2_[e + 1]); };
+  const auto wire_moved2 = [&](int e) {
+    return std::max(wire_ref_.moved2[e], wire_ref_.moved2[e + 1]);
+  };
   const int n_cand = static_cast<int>(candidates_.size());
   const int n_edge = static_cast<int>(seg_edge_.size());
   const int n_vert = static_cast<int>(seg_vert_.size());
@@ -403,8 +391,8 @@ double WireShellTerm::evaluate(const RodState& s, RodForces* out) {
       const auto [e, f] = candidates_[q];
       const auto& v = mesh_.faces[f];
       const double moved2 = std::max(
-          wire_moved2(e),
-          std::max(shell_moved2_[v[0]], std::max(shell_moved2_[v[1]], shell_moved2_[v[2]])));
+          wire_moved2(e), std::max(shell_ref_.moved2[v[0]],
+                                   std::max(shell_ref_.moved2[v[1]], shell_ref_.moved2[v[2]])));
       if (moved2 < cand_slack2_4_[q]) {  // cannot touch yet
         cand_geo_[q].dist2 = far2;
         continue;
@@ -427,7 +415,7 @@ double WireShellTerm::evaluate(const RodState& s, RodForces* out) {
       const auto [e, k] = seg_edge_[q];
       const int v0 = mesh_.edges[k][0], v1 = mesh_.edges[k][1];
       edge_hit_[q].touching = false;
-      if (std::max(wire_moved2(e), std::max(shell_moved2_[v0], shell_moved2_[v1])) <
+      if (std::max(wire_moved2(e), std::max(shell_ref_.moved2[v0], shell_ref_.moved2[v1])) <
               edge_slack2_4_[q] ||
           (!touching(edge_owner_[q][0]) && !touching(edge_owner_[q][1]))) {
         edge_geo_[q].dist2 = skipped;
@@ -445,7 +433,7 @@ double WireShellTerm::evaluate(const RodState& s, RodForces* out) {
     for (int q = 0; q < n_vert; ++q) {  // + (wire edge, shell vertex)
       const auto [e, vtx] = seg_vert_[q];
       vert_hit_[q].touching = false;
-      if (std::max(wire_moved2(e), shell_moved2_[vtx]) < vert_slack2_4_[q]) continue;
+      if (std::max(wire_moved2(e), shell_ref_.moved2[vtx]) < vert_slack2_4_[q]) continue;
       const int* owners = vert_owner_.data() + vert_owner_start_[q];
       const int n_owners = vert_owner_start_[q + 1] - vert_owner_start_[q];
       bool any = false;
@@ -514,7 +502,7 @@ double WireShellTerm::evaluate(const RodState& s, RodForces* out) {
   return U;
 }
 
-double WireShellTerm::accumulate(const RodState& s, RodForces& out) {
+double WireShellTerm::accumulate(const State& s, Forces& out) {
   const double U = evaluate(s, &out);
   double kmax = 0.0;
   for (const FacePair& c : face_pairs_) kmax = std::max(kmax, hertz_.stiffness(c.delta));
@@ -599,8 +587,8 @@ void WireShellTerm::serialize(Self& t, Archive& ar) {
   ar(t.edges_at_build_);
   ar(t.rebuilds_);
   ar(t.face_reach_);
-  ar(t.x_at_build_);
-  ar(t.shell_at_build_);
+  ar(t.wire_ref_.at_build);
+  ar(t.shell_ref_.at_build);
   ar(t.candidates_);
   ar(t.seg_edge_);
   ar(t.seg_vert_);
@@ -610,8 +598,8 @@ void WireShellTerm::serialize(Self& t, Archive& ar) {
   ar(t.cand_slack2_4_);
   ar(t.edge_slack2_4_);
   ar(t.vert_slack2_4_);
-  if (!t.shell_at_build_.empty() &&
-      t.shell_at_build_.size() != static_cast<std::size_t>(t.mesh_.num_vertices()))
+  if (!t.shell_ref_.at_build.empty() &&
+      t.shell_ref_.at_build.size() != static_cast<std::size_t>(t.mesh_.num_vertices()))
     ar.fail("wire-shell contact of another mesh");
   serialize_friction(ar, t.friction_.get());
 }
@@ -622,7 +610,7 @@ void WireShellTerm::save(StateWriter& out) const {
 void WireShellTerm::load(StateReader& in) {
   serialize(*this, in);
   // The guide's candidates are a function of the state at the build (not stored).
-  if (!x_at_build_.empty()) rebuild_guide(shell_at_build_, x_at_build_.back());
+  if (!wire_ref_.at_build.empty()) rebuild_guide(shell_ref_.at_build, wire_ref_.at_build.back());
 }
 
 }  // namespace wirepack

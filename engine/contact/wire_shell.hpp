@@ -37,6 +37,7 @@
 #include "engine/contact/hertz.hpp"
 #include "engine/contact/segment_distance.hpp"
 #include "engine/contact/triangle_distance.hpp"
+#include "engine/contact/verlet.hpp"
 #include "engine/shell/shell_term.hpp"
 #include "engine/term.hpp"
 
@@ -61,8 +62,8 @@ class WireShellTerm : public FrictionalTerm {
   std::string name() const override { return "wire_shell"; }
   TermType type() const override { return TermType::kWireShell; }
   DofGroup dofs() const override { return DofGroup::kCoupling; }
-  double accumulate(const RodState& s, RodForces& out) override;
-  double energy(const RodState& s) override { return evaluate(s, nullptr); }
+  double accumulate(const State& s, Forces& out) override;
+  double energy(const State& s) override { return evaluate(s, nullptr); }
   double omega_max_sq(const RodInertia& inertia) const override;
   void save(StateWriter& out) const override;
   void load(StateReader& in) override;
@@ -94,14 +95,14 @@ class WireShellTerm : public FrictionalTerm {
     double delta;
     double force;
   };
-  double evaluate(const RodState& s, RodForces* out);
-  void maybe_rebuild(const RodState& s);
-  void rebuild(const RodState& s);
-  int active_edges(const RodState& s) const { return std::min(s.n_free, s.num_edges()); }
+  double evaluate(const State& s, Forces* out);
+  void maybe_rebuild(const State& s);
+  void rebuild(const State& s);
+  int active_edges(const State& s) const { return std::min(s.n_free, s.num_edges()); }
   // The guide's candidate pieces from the shell (x_shell) and the guide's top at the build.
   void rebuild_guide(const Vec3List& x_shell, const Vec3& top);
   // Guide-shell contact energy [J]; adds its forces into out when given.
-  double guide_evaluate(const RodState& s, RodForces* out);
+  double guide_evaluate(const State& s, Forces* out);
 
   const ShellMesh& mesh_;
   WireShellParams p_;
@@ -126,10 +127,9 @@ class WireShellTerm : public FrictionalTerm {
     int e, f;
     double slack2_4;
   };
-  std::vector<FoundPair> found_;               // scratch of rebuild()
-  std::vector<double> broad_dist2_;            // scratch of rebuild(): per broad pair [m^2]
-  std::vector<double> moved2_, shell_moved2_;  // |x - x_at_build|^2 per node / vertex [m^2]
-  Vec3List x_at_build_, shell_at_build_;
+  std::vector<FoundPair> found_;          // scratch of rebuild()
+  std::vector<double> broad_dist2_;       // scratch of rebuild(): per broad pair [m^2]
+  VerletReference wire_ref_, shell_ref_;  // nodes / vertices at the list's build, their moves
   int edges_at_build_ = -1;
   long rebuilds_ = 0;
   double face_reach_ = 0;  // largest distance from a face centroid to its vertices [m]

@@ -2,10 +2,10 @@
 
 namespace wirepack {
 
-Vec3List wire_shell_vertex_forces(const ShellMesh& mesh, WireShellParams p, const RodState& s) {
+Vec3List wire_shell_vertex_forces(const ShellMesh& mesh, WireShellParams p, const State& s) {
   p.friction = FrictionParams{};  // normal force only: a fresh history has no tangential part
   WireShellTerm term(mesh, p);
-  RodForces f;
+  Forces f;
   f.reset(s);
   term.accumulate(s, f);
   return f.shell_f;

@@ -4,8 +4,8 @@
 // fresh WireShellTerm without friction, so the simulation's own term (its Verlet list, its
 // friction history) is untouched and the trajectory stays bitwise the same.
 #include "engine/contact/wire_shell.hpp"
-#include "engine/rod/rod_state.hpp"
 #include "engine/shell/shell_term.hpp"
+#include "engine/state.hpp"
 
 namespace wirepack {
 
@@ -14,6 +14,6 @@ namespace wirepack {
 // with p.guide, the guide outside the hole included). The wire takes the opposite total
 // (action = reaction; of the guide's, the part not on its first node goes to the feeder).
 // Needs s.shell_x of the mesh's size.
-Vec3List wire_shell_vertex_forces(const ShellMesh& mesh, WireShellParams p, const RodState& s);
+Vec3List wire_shell_vertex_forces(const ShellMesh& mesh, WireShellParams p, const State& s);
 
 }  // namespace wirepack

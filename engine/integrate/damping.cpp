@@ -6,7 +6,7 @@
 
 namespace wirepack {
 
-void RodDamping::add_forces(const RodState& s, RodForces& out) const {
+void RodDamping::add_forces(const State& s, Forces& out) const {
   const int n = s.num_nodes();
   const int nf = s.n_free;
   if (n < 2) return;

@@ -40,7 +40,7 @@ class RodDamping {
  public:
   explicit RodDamping(const DampingParams& p) : p_(p) {}
   // Adds the damping forces of the dynamic nodes/edges into `out` (uses s.v and s.omega).
-  void add_forces(const RodState& s, RodForces& out) const;
+  void add_forces(const State& s, Forces& out) const;
   const DampingParams& params() const { return p_; }
 
  private:

@@ -15,7 +15,7 @@ double PredictorCorrector::stable_step(double omega2) const {
   return c_.safety * 2.0 / std::sqrt(omega2) * (std::sqrt(1.0 + z * z) - z);
 }
 
-void PredictorCorrector::initialise(RodState& s, const EvaluateFn& eval,
+void PredictorCorrector::initialise(State& s, const EvaluateFn& eval,
                                     const PositionsChangedFn& moved) {
   moved(s);
   trial_dt_ = 0.0;
@@ -25,8 +25,7 @@ void PredictorCorrector::initialise(RodState& s, const EvaluateFn& eval,
   dt_ = std::min(dt_, dt_stable_);
 }
 
-double PredictorCorrector::step(RodState& s, const EvaluateFn& eval,
-                                const PositionsChangedFn& moved) {
+double PredictorCorrector::step(State& s, const EvaluateFn& eval, const PositionsChangedFn& moved) {
   const int n = s.num_nodes();
   const int ne = static_cast<int>(s.theta.size());
   const int nv = static_cast<int>(s.shell_x.size());

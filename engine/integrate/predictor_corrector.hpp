@@ -10,7 +10,7 @@
 // the stability limit 2/omega_max (sqrt(1 + zeta^2) - zeta) of an explicit damped oscillator.
 #include <functional>
 
-#include "engine/rod/rod_state.hpp"
+#include "engine/state.hpp"
 #include "engine/state_archive.hpp"
 
 namespace wirepack {
@@ -31,18 +31,18 @@ struct StepControl {
 // (n-1, zero for fixed edges) and shell_a (one per shell vertex, zero when clamped; left empty
 // without a shell); returns omega_max^2 of the system at that state [1/s^2].
 using EvaluateFn =
-    std::function<double(RodState&, Vec3List& a, std::vector<double>& alpha, Vec3List& shell_a)>;
+    std::function<double(State&, Vec3List& a, std::vector<double>& alpha, Vec3List& shell_a)>;
 // Called after positions change (reference frames, ...).
-using PositionsChangedFn = std::function<void(RodState&)>;
+using PositionsChangedFn = std::function<void(State&)>;
 
 class PredictorCorrector {
  public:
   PredictorCorrector(const StepControl& c, double length_scale) : c_(c), r_(length_scale) {}
   // Computes a and alpha at the current state (start, or after the DOF count changed).
-  void initialise(RodState& s, const EvaluateFn& eval, const PositionsChangedFn& moved);
+  void initialise(State& s, const EvaluateFn& eval, const PositionsChangedFn& moved);
   // Advances by one accepted step; returns the step taken [s]. Throws SimulationError when the
   // step collapses below the floor or the state stops being finite.
-  double step(RodState& s, const EvaluateFn& eval, const PositionsChangedFn& moved);
+  double step(State& s, const EvaluateFn& eval, const PositionsChangedFn& moved);
 
   double dt() const { return dt_; }
   // Size of the step being tried during an evaluation (0 during initialise) [s].
@@ -67,7 +67,7 @@ class PredictorCorrector {
   Vec3List a_, a_new_, x0_, v0_;
   Vec3List sa_, sa_new_, sx0_, sv0_;  // the same for shell vertices
   std::vector<double> alpha_, alpha_new_, th0_, om0_;
-  RodState saved_frames_;  // ref1 / ref_tangent / ref_twist before a step, for rejection
+  State saved_frames_;  // ref1 / ref_tangent / ref_twist before a step, for rejection
 };
 
 }  // namespace wirepack

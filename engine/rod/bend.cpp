@@ -11,7 +11,7 @@ namespace {
 constexpr double kMinOnePlusCos = 1e-9;
 }  // namespace
 
-double BendTerm::accumulate(const RodState& s, RodForces& out) {
+double BendTerm::accumulate(const State& s, Forces& out) {
   const int n = s.num_nodes();
   double U = 0.0;
   min_rest_ = out.min_rest_length;
@@ -37,7 +37,7 @@ double BendTerm::accumulate(const RodState& s, RodForces& out) {
   return U;
 }
 
-double BendTerm::energy(const RodState& s) {
+double BendTerm::energy(const State& s) {
   const int n = s.num_nodes();
   double U = 0.0;
   for (int i = 1; i + 1 < n; ++i) {

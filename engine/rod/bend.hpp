@@ -13,8 +13,8 @@ class BendTerm : public Term {
   explicit BendTerm(double EI) : EI_(EI) {}
   std::string name() const override { return "bend"; }
   TermType type() const override { return TermType::kBend; }
-  double accumulate(const RodState& s, RodForces& out) override;
-  double energy(const RodState& s) override;
+  double accumulate(const State& s, Forces& out) override;
+  double energy(const State& s) override;
   double omega_max_sq(const RodInertia& inertia) const override;
 
  private:

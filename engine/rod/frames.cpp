@@ -5,14 +5,14 @@
 
 namespace wirepack {
 
-void update_reference_frames(RodState& s) {
+void update_reference_frames(State& s) {
   if (!s.has_twist()) return;
-  RodForces scratch;
+  Forces scratch;
   scratch.reset(s);
   update_reference_frames(s, scratch);
 }
 
-void update_reference_frames(RodState& s, RodForces& work) {
+void update_reference_frames(State& s, Forces& work) {
   if (!s.has_twist()) return;
   const Vec3List& edge_t = work.edge_t;
   const int ne = s.num_edges();
@@ -52,7 +52,7 @@ void update_reference_frames(RodState& s, RodForces& work) {
   }
 }
 
-void init_reference_frames(RodState& s, int first_edge) {
+void init_reference_frames(State& s, int first_edge) {
   if (!s.has_twist()) return;
   const int ne = s.num_edges();
   s.ref1.resize(ne);

@@ -5,7 +5,7 @@
 // from the space-parallel transport of ref1_{i-1} onto edge i to ref1_i, about t_i.
 #include <cmath>
 
-#include "engine/rod/rod_state.hpp"
+#include "engine/state.hpp"
 
 namespace wirepack {
 
@@ -16,7 +16,7 @@ inline Vec3 parallel_transport(const Vec3& u, const Vec3& t0, const Vec3& t1) {
   return parallel_transport(u, t0, t0.cross(t1), t0.dot(t1));
 }
 
-// The same with b = t0 x t1 and c = t0 . t1 given (RodForces::node_cross, node_cos).
+// The same with b = t0 x t1 and c = t0 . t1 given (Forces::node_cross, node_cos).
 inline Vec3 parallel_transport(const Vec3& u, const Vec3& t0, const Vec3& b, double c) {
   if (b.squaredNorm() < 1e-30) {
     if (c > 0) return u;
@@ -38,13 +38,13 @@ inline double signed_angle(const Vec3& a, const Vec3& b, const Vec3& n) {
 // Transports every ref1 from its stored ref_tangent to the current edge tangent, stores the new
 // tangent, and recomputes ref_twist (unwrapped against its previous value so that it is
 // continuous in time). No-op when the state has no twist DOFs.
-void update_reference_frames(RodState& s);
+void update_reference_frames(State& s);
 // The same with the current unit edge tangents of `work` (work.reset(s) computed them); uses
 // work.scratch.
-void update_reference_frames(RodState& s, RodForces& work);
+void update_reference_frames(State& s, Forces& work);
 
 // Initialises ref1 / ref_tangent / ref_twist for edges [first, n-1) that have none yet
 // (new edges added by the feeder), with a director normal to the tangent.
-void init_reference_frames(RodState& s, int first_edge);
+void init_reference_frames(State& s, int first_edge);
 
 }  // namespace wirepack

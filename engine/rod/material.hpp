@@ -1,7 +1,6 @@
 #pragma once
 // Section and material constants of the wire (paper Eq. (1)).
-#include <cmath>
-
+#include "core/section.hpp"
 #include "engine/params.hpp"
 
 namespace wirepack {
@@ -19,8 +18,8 @@ struct RodMaterial {
     m.r = w.radius;
     m.E = w.youngs_modulus;
     m.G = w.youngs_modulus / (2.0 * (1.0 + w.poisson_ratio));
-    m.A = M_PI * w.radius * w.radius;
-    m.I = M_PI * std::pow(w.radius, 4) / 4.0;
+    m.A = section_area(w.radius);
+    m.I = section_second_moment(w.radius);
     m.J = 2.0 * m.I;
     return m;
   }

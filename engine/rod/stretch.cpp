@@ -5,7 +5,7 @@
 
 namespace wirepack {
 
-double StretchTerm::accumulate(const RodState& s, RodForces& out) {
+double StretchTerm::accumulate(const State& s, Forces& out) {
   double U = 0.0;
   const int ne = s.num_edges();
   for (int j = 0; j < ne; ++j) {
@@ -23,7 +23,7 @@ double StretchTerm::accumulate(const RodState& s, RodForces& out) {
   return U;
 }
 
-double StretchTerm::energy(const RodState& s) {
+double StretchTerm::energy(const State& s) {
   double U = 0.0;
   for (int j = 0; j < s.num_edges(); ++j) {
     const double strain = (s.x[j + 1] - s.x[j]).norm() / s.rest_length[j] - 1.0;

@@ -10,8 +10,8 @@ class StretchTerm : public Term {
   explicit StretchTerm(double EA) : EA_(EA) {}
   std::string name() const override { return "stretch"; }
   TermType type() const override { return TermType::kStretch; }
-  double accumulate(const RodState& s, RodForces& out) override;
-  double energy(const RodState& s) override;
+  double accumulate(const State& s, Forces& out) override;
+  double energy(const State& s) override;
   double omega_max_sq(const RodInertia& inertia) const override;
 
  private:

@@ -7,7 +7,7 @@
 
 namespace wirepack {
 
-double TwistTerm::accumulate(const RodState& s, RodForces& out) {
+double TwistTerm::accumulate(const State& s, Forces& out) {
   const int end = twist_end_node(s, free_at_guide_);
   min_rest_ = out.min_rest_length;
   double U = 0.0;
@@ -30,8 +30,8 @@ double TwistTerm::accumulate(const RodState& s, RodForces& out) {
   return U;
 }
 
-double TwistTerm::energy(const RodState& s) {
-  RodState c = s;
+double TwistTerm::energy(const State& s) {
+  State c = s;
   update_reference_frames(c);
   double U = 0.0;
   const int end = twist_end_node(c, free_at_guide_);

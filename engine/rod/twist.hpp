@@ -14,7 +14,7 @@ namespace wirepack {
 // Nodes i in [1, end) carry twist and its dashpot: all interior nodes, or, with a swivel at the
 // hole (free_at_guide), those before the node n_free - 1 that joins the last free edge to the
 // guide.
-inline int twist_end_node(const RodState& s, bool free_at_guide) {
+inline int twist_end_node(const State& s, bool free_at_guide) {
   const int n = s.num_nodes();
   return free_at_guide ? std::min(n - 1, s.n_free - 1) : n - 1;
 }
@@ -27,10 +27,10 @@ class TwistTerm : public Term {
       : GJ_(GJ), free_at_guide_(free_at_guide) {}
   std::string name() const override { return "twist"; }
   TermType type() const override { return TermType::kTwist; }
-  double accumulate(const RodState& s, RodForces& out) override;
+  double accumulate(const State& s, Forces& out) override;
   // Transports the reference frames of a copy of `s` to its positions first, so the energy is
   // a function of (x, theta) given the stored frames: this is what finite differences see.
-  double energy(const RodState& s) override;
+  double energy(const State& s) override;
   double omega_max_sq(const RodInertia& inertia) const override;
 
  private:

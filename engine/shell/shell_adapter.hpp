@@ -15,10 +15,10 @@ class ShellTermAdapter : public Term {
   std::string name() const override { return term_->name(); }
   TermType type() const override { return term_->type(); }
   DofGroup dofs() const override { return DofGroup::kShell; }
-  double accumulate(const RodState& s, RodForces& out) override {
+  double accumulate(const State& s, Forces& out) override {
     return term_->accumulate(s.shell_x, out.shell_f);
   }
-  double energy(const RodState& s) override { return term_->energy(s.shell_x); }
+  double energy(const State& s) override { return term_->energy(s.shell_x); }
   double omega_max_sq(const RodInertia&) const override { return term_->omega_max_sq(m_); }
 
  private:

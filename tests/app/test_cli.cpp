@@ -13,7 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli_runner.hpp"
-#include "sweep/run_file.hpp"
+#include "sweep/runfile/run_file.hpp"
 #include "sweep/temp_dir.hpp"
 
 namespace wirepack {

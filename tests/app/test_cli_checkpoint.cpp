@@ -22,7 +22,7 @@
 
 #include "cli_runner.hpp"
 #include "sanitizers.hpp"
-#include "sweep/run_file.hpp"
+#include "sweep/runfile/run_file.hpp"
 
 namespace wirepack {
 namespace {

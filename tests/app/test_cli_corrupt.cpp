@@ -17,8 +17,8 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli_runner.hpp"
-#include "sweep/run_file.hpp"
-#include "sweep/sweep_config.hpp"
+#include "sweep/config/sweep_config.hpp"
+#include "sweep/runfile/run_file.hpp"
 #include "sweep/temp_dir.hpp"
 
 namespace wirepack {

@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "app/cli_runner.hpp"
-#include "sweep/run_file.hpp"
+#include "sweep/runfile/run_file.hpp"
 #include "sweep/temp_dir.hpp"
 
 namespace wirepack::sweep {

@@ -31,9 +31,9 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "sweep/run_checkpoint.hpp"
-#include "sweep/run_file.hpp"
-#include "sweep/sweep_config.hpp"
+#include "sweep/config/sweep_config.hpp"
+#include "sweep/runfile/run_checkpoint.hpp"
+#include "sweep/runfile/run_file.hpp"
 #include "sweep/temp_dir.hpp"
 
 namespace wirepack {

@@ -54,11 +54,11 @@ double max_point_error(Vec3List& points, const Vec3List& force, double h, Energy
 
 // Random, generic rod: n nodes, edges of length ~ ell with random directions (a crumpled
 // curve with moderate turning angles), rest lengths perturbed by a few percent, random theta.
-inline RodState random_rod(int n, double ell, bool twist, unsigned seed) {
+inline State random_rod(int n, double ell, bool twist, unsigned seed) {
   std::mt19937_64 rng(seed);
   std::normal_distribution<double> g(0.0, 1.0);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  RodState s;
+  State s;
   s.x.push_back(Vec3::Zero());
   Vec3 dir(0, 0, 1);
   for (int i = 1; i < n; ++i) {
@@ -89,10 +89,10 @@ inline RodState random_rod(int n, double ell, bool twist, unsigned seed) {
 // Central differences of term.energy in every coordinate of every wire node, every theta (when
 // the state has twist) and every shell vertex (when it has an elastic shell), at steps
 // h * length_scale (angles: h rad) for each h in `steps`. Torques enter as torque / length_scale.
-inline FdReport fd_check(Term& term, const RodState& s0, double length_scale,
+inline FdReport fd_check(Term& term, const State& s0, double length_scale,
                          const std::vector<double>& steps) {
-  RodState s = s0;
-  RodForces f;
+  State s = s0;
+  Forces f;
   f.reset(s);
   term.accumulate(s, f);
   double fmax = 0.0;
@@ -105,7 +105,7 @@ inline FdReport fd_check(Term& term, const RodState& s0, double length_scale,
     double err = 0.0;
     for (int i = 0; i < s.num_nodes(); ++i) {
       for (int k = 0; k < 3; ++k) {
-        RodState p = s0, m = s0;
+        State p = s0, m = s0;
         p.x[i][k] += h;
         m.x[i][k] -= h;
         const double dU = (term.energy(p) - term.energy(m)) / (2 * h);
@@ -114,13 +114,13 @@ inline FdReport fd_check(Term& term, const RodState& s0, double length_scale,
     }
     const double ha = hrel;  // angle step [rad]
     for (size_t j = 0; j < s.theta.size(); ++j) {
-      RodState p = s0, m = s0;
+      State p = s0, m = s0;
       p.theta[j] += ha;
       m.theta[j] -= ha;
       const double dU = (term.energy(p) - term.energy(m)) / (2 * ha);
       err = std::max(err, std::abs(f.torque[j] + dU) / length_scale);
     }
-    RodState q = s0;
+    State q = s0;
     err = std::max(
         err, fd_detail::max_point_error(q.shell_x, f.shell_f, h, [&] { return term.energy(q); }));
     rep.h.push_back(hrel);

@@ -26,8 +26,8 @@ inline RodMaterial default_material() {
 // current edge lengths (so it is stress free in stretching), every node dynamic. With
 // `twist`, theta = 0 and reference frames by space-parallel transport from edge 0
 // (reference twist 0).
-inline RodState rod_through(const Vec3List& x, bool twist = false) {
-  RodState s;
+inline State rod_through(const Vec3List& x, bool twist = false) {
+  State s;
   s.x = x;
   const int n = static_cast<int>(x.size());
   s.v.assign(n, Vec3::Zero());
@@ -42,8 +42,8 @@ inline RodState rod_through(const Vec3List& x, bool twist = false) {
 }
 
 // Straight rod of n nodes spaced ell along the unit direction dir, starting at origin.
-inline RodState straight_rod(int n, double ell, const Vec3& dir = Vec3::UnitX(), bool twist = false,
-                             const Vec3& origin = Vec3::Zero()) {
+inline State straight_rod(int n, double ell, const Vec3& dir = Vec3::UnitX(), bool twist = false,
+                          const Vec3& origin = Vec3::Zero()) {
   Vec3List x;
   for (int i = 0; i < n; ++i) x.push_back(origin + (i * ell) * dir);
   return rod_through(x, twist);
@@ -79,8 +79,8 @@ inline Vec3List polyline(const Vec3List& waypoints, double max_len) {
 }
 
 // Generalised forces of one term at a state (fresh accumulator).
-inline RodForces forces_of(Term& term, const RodState& s, double* energy = nullptr) {
-  RodForces f;
+inline Forces forces_of(Term& term, const State& s, double* energy = nullptr) {
+  Forces f;
   f.reset(s);
   const double U = term.accumulate(s, f);
   if (energy) *energy = U;
@@ -96,7 +96,7 @@ inline Vec3 sum_of(const Vec3List& f) {
 // Total moment about the origin of the nodal forces plus the material torques about the
 // edge tangents: sum_i x_i x f_i + sum_j tau_j t_j. Zero for any energy invariant under rigid
 // rotations (with theta following the material frame, see test_twist.cpp) [N m].
-inline Vec3 moment_of(const RodState& s, const RodForces& f) {
+inline Vec3 moment_of(const State& s, const Forces& f) {
   Vec3 m = Vec3::Zero();
   for (int i = 0; i < s.num_nodes(); ++i) m += s.x[i].cross(f.f[i]);
   for (size_t j = 0; j < f.torque.size(); ++j) {
@@ -115,18 +115,18 @@ struct Relaxation {
   double node_mass = 0;  // lumped node mass [kg]
   double drag = 0;       // c = gamma m per node [N s/m]
   // Extra loads (external forces) added into the forces at a state.
-  std::function<void(const RodState&, RodForces&)> load = [](const RodState&, RodForces&) {};
+  std::function<void(const State&, Forces&)> load = [](const State&, Forces&) {};
   // Zeroes the constrained components of node i's acceleration (guide nodes i >= n_free are
   // always held).
   std::function<void(int, Vec3&)> constrain = [](int, Vec3&) {};
 
-  RodForces f;          // scratch
+  Forces f;             // scratch
   double residual = 0;  // largest static force component on a dynamic DOF at the last eval [N]
   double t = 0;         // simulated time [s]
   long steps = 0;       // accepted steps
 
   // Accelerations for the predictor-corrector; the residual excludes the drag.
-  double evaluate(RodState& s, Vec3List& a, std::vector<double>& alpha, Vec3List&) {
+  double evaluate(State& s, Vec3List& a, std::vector<double>& alpha, Vec3List&) {
     f.reset(s);
     double omega2 = 0;
     for (Term* term : terms) {
@@ -149,17 +149,17 @@ struct Relaxation {
 
   // Integrates until `done(state)` returns true (checked every `every` steps) or the time
   // exceeds t_max [s]. tolerance: local position error per step [m]. Returns true if done.
-  bool run(RodState& s, double tolerance, double t_max,
-           const std::function<bool(const RodState&)>& done, int every = 100) {
+  bool run(State& s, double tolerance, double t_max, const std::function<bool(const State&)>& done,
+           int every = 100) {
     StepControl c;
     c.tolerance = tolerance;
     c.damping_ratio = 0.0;  // the drag damps the fastest modes only weakly
     c.dt_floor = 1e-15;
     PredictorCorrector pc(c, 1.0);
-    auto eval = [this](RodState& st, Vec3List& a, std::vector<double>& al, Vec3List& sa) {
+    auto eval = [this](State& st, Vec3List& a, std::vector<double>& al, Vec3List& sa) {
       return evaluate(st, a, al, sa);
     };
-    auto moved = [](RodState&) {};
+    auto moved = [](State&) {};
     pc.initialise(s, eval, moved);
     while (t < t_max) {
       t += pc.step(s, eval, moved);
@@ -189,7 +189,7 @@ struct PinnedColumn {
   double gamma = 0;   // drag rate c / m [1/s]
   StretchTerm stretch{mat.EA()};
   BendTerm bend{mat.EI()};
-  RodState s;
+  State s;
   Relaxation relax;
 
   PinnedColumn(int n_edges, double length, double zeta1) {
@@ -218,7 +218,7 @@ struct PinnedColumn {
     s = rod_through(x);
     s.rest_length.assign(N, l);
     s.n_free = N;  // node N is the fixed pin
-    relax.load = [P](const RodState&, RodForces& f) { f.f[0][0] += P; };
+    relax.load = [P](const State&, Forces& f) { f.f[0][0] += P; };
     relax.t = 0;
     relax.steps = 0;
   }

@@ -18,8 +18,8 @@ namespace wirepack {
 namespace {
 
 // Straight wire on +z: nodes [0, n_free) free, then `guide` kinematic nodes, theta = 0.
-RodState wire_with_guide(int n_free, int guide, double ell) {
-  RodState s;
+State wire_with_guide(int n_free, int guide, double ell) {
+  State s;
   const int n = n_free + guide;
   for (int i = 0; i < n; ++i) s.x.push_back(Vec3(0.0, 0.0, -i * ell));
   s.v.assign(n, Vec3::Zero());
@@ -40,12 +40,12 @@ TEST(FeederSpin, StaticTwistUnderATipTorqueNeedsTheHeldGuide) {
   const auto mat = RodMaterial::from(WireParams{});
   const double ell = 0.5e-3, T = 1e-6;  // [m], [N m]
   const int nf = 12;
-  RodState s = wire_with_guide(nf, 3, ell);
+  State s = wire_with_guide(nf, 3, ell);
   for (int j = 0; j + 1 < nf; ++j) s.theta[j] = T * (nf - 1 - j) * ell / mat.GJ();
   for (bool free : {false, true}) {
     SCOPED_TRACE(free ? "swivel" : "held");
     TwistTerm term(mat.GJ(), free);
-    RodForces f;
+    Forces f;
     f.reset(s);
     term.accumulate(s, f);
     f.torque[0] += T;  // the applied tip torque
@@ -79,7 +79,7 @@ TEST(FeederSpin, ASwivelLetsTheTipTorqueSpinTheWholeWire) {
   const int steps = 4000;
   for (bool free : {false, true}) {
     SCOPED_TRACE(free ? "swivel" : "held");
-    RodState s = wire_with_guide(nf, 3, ell);
+    State s = wire_with_guide(nf, 3, ell);
     TwistTerm term(mat.GJ(), free);
     DampingParams dp;
     dp.eta_twist = eta;
@@ -88,7 +88,7 @@ TEST(FeederSpin, ASwivelLetsTheTipTorqueSpinTheWholeWire) {
     WireMass M(I_p, beta);
     M.factorise(ne_free, !free);
     std::vector<double> alpha;
-    RodForces f;
+    Forces f;
     auto accel = [&] {
       f.reset(s);
       term.accumulate(s, f);
@@ -129,10 +129,10 @@ FeederParams feeder_params(bool spin_free) {
 }
 
 // Twist energy of the rod with the given boundary condition at the hole [J].
-double twist_energy(const RodState& s, bool free) {
+double twist_energy(const State& s, bool free) {
   const auto mat = RodMaterial::from(WireParams{});
   TwistTerm term(mat.GJ(), free);
-  RodForces f;
+  Forces f;
   f.reset(s);
   return term.accumulate(s, f);
 }
@@ -147,7 +147,7 @@ TEST(FeederSpin, ReleaseContinuesTheSpunWireWithASwivel) {
   for (bool free : {false, true}) {
     SCOPED_TRACE(free ? "swivel" : "held");
     Feeder feeder(feeder_params(free));
-    RodState s = feeder.initial_state();
+    State s = feeder.initial_state();
     const int nf0 = s.n_free;
     ASSERT_GE(nf0, 3);
     for (int j = 0; j + 1 < nf0; ++j) {

@@ -13,10 +13,10 @@
 #include <nlohmann/json.hpp>
 
 #include "report/analyze.hpp"
+#include "sweep/config/json_file.hpp"
+#include "sweep/config/scene_config.hpp"
+#include "sweep/config/sweep_config.hpp"
 #include "sweep/errors.hpp"
-#include "sweep/json_file.hpp"
-#include "sweep/scene_config.hpp"
-#include "sweep/sweep_config.hpp"
 
 namespace {
 

@@ -10,10 +10,10 @@
 
 #include <gtest/gtest.h>
 
+#include "sweep/config/json_file.hpp"
+#include "sweep/config/sweep_config.hpp"
 #include "sweep/errors.hpp"
-#include "sweep/json_file.hpp"
-#include "sweep/sweep_config.hpp"
-#include "sweep/sweep_runner.hpp"
+#include "sweep/running/sweep_runner.hpp"
 #include "sweep/temp_dir.hpp"
 
 namespace wirepack::report {

@@ -17,12 +17,12 @@
 
 #include "analysis/purohit.hpp"
 #include "sweep/atomic_file.hpp"
+#include "sweep/config/json_file.hpp"
+#include "sweep/config/sweep_config.hpp"
 #include "sweep/errors.hpp"
-#include "sweep/json_file.hpp"
-#include "sweep/run.hpp"
-#include "sweep/run_file.hpp"
-#include "sweep/sweep_config.hpp"
-#include "sweep/sweep_manifest.hpp"
+#include "sweep/runfile/run_file.hpp"
+#include "sweep/running/run.hpp"
+#include "sweep/running/sweep_manifest.hpp"
 #include "sweep/temp_dir.hpp"
 
 namespace wirepack::report {
@@ -639,8 +639,8 @@ TEST(AnalysisBlock, DefaultsAndEveryKey) {
   } catch (const InputError& e) {
     ASSERT_EQ(e.messages().size(), 3u);
     EXPECT_EQ(e.messages()[0],
-              "s.json: /analysis/critical_ranges/mu_d: not a transition parameter; valid: mu_s, "
-              "eps, xi, rho");
+              "s.json: /analysis/critical_ranges/mu_d: not a transition parameter; valid: rho, "
+              "xi, eps, mu_s");
     EXPECT_EQ(e.messages()[1],
               "s.json: /analysis/critical_ranges/rho: must be [x_min, x_max] with x_min < x_max "
               "(got [20,10])");

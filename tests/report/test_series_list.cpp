@@ -1,7 +1,7 @@
-// The one list of recorded series (docs/design.md §5.7, sweep/series.hpp): its columns, the
+// The one list of recorded series (docs/design.md §5.7, sweep/runfile/series.hpp): its columns, the
 // series the reports name, the table in docs/reference.md, and one extra series passed through
 // the run loop, `wirepack export --csv` and `wirepack analyze`'s series.csv.
-#include "sweep/series.hpp"
+#include "sweep/runfile/series.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -13,8 +13,8 @@
 
 #include "report/analyze.hpp"
 #include "report/reductions.hpp"
-#include "sweep/export.hpp"
-#include "sweep/run.hpp"
+#include "sweep/runfile/export.hpp"
+#include "sweep/running/run.hpp"
 #include "sweep/temp_dir.hpp"
 
 namespace wirepack::report {

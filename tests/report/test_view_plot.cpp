@@ -14,11 +14,11 @@
 #include "report/analyze.hpp"
 #include "report/plots.hpp"
 #include "sweep/atomic_file.hpp"
-#include "sweep/json_file.hpp"
-#include "sweep/run.hpp"
-#include "sweep/run_file.hpp"
-#include "sweep/sweep_config.hpp"
-#include "sweep/sweep_manifest.hpp"
+#include "sweep/config/json_file.hpp"
+#include "sweep/config/sweep_config.hpp"
+#include "sweep/runfile/run_file.hpp"
+#include "sweep/running/run.hpp"
+#include "sweep/running/sweep_manifest.hpp"
 #include "sweep/temp_dir.hpp"
 
 namespace wirepack::report {

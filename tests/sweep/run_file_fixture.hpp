@@ -2,7 +2,7 @@
 // A small elastic run in run file layout 1 (triangles in every snapshot, nothing compressed):
 // tests/sweep/data/run_layout1.h5 was written from layout1_record() by the write_run_file of
 // wirepack 0.1.0 at commit 4820c39, the last one writing layout 1. Readers must keep reading it.
-#include "sweep/run_file.hpp"
+#include "sweep/runfile/run_file.hpp"
 
 namespace wirepack::testing {
 

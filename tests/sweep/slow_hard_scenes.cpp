@@ -34,7 +34,7 @@
 
 #include "engine/shell/winding.hpp"
 #include "engine/simulation.hpp"
-#include "sweep/scene_config.hpp"
+#include "sweep/config/scene_config.hpp"
 
 namespace wirepack::sweep {
 namespace {

@@ -18,7 +18,7 @@
 
 #include "analysis/observables.hpp"
 #include "engine/simulation.hpp"
-#include "sweep/scene_config.hpp"
+#include "sweep/config/scene_config.hpp"
 
 namespace wirepack::sweep {
 namespace {

@@ -12,13 +12,13 @@
 namespace wirepack::testing {
 
 struct FrictionRig {
-  RodState s;
+  State s;
   std::vector<std::unique_ptr<Term>> terms;
   RodInertia inertia;
   std::vector<bool> fixed;  // nodes held at rest (in addition to the guide)
   // External generalised forces at time t (added to the forces of the terms).
-  std::function<void(double t, const RodState&, RodForces&)> external;
-  RodForces f;
+  std::function<void(double t, const State&, Forces&)> external;
+  Forces f;
   double t = 0;
   std::unique_ptr<PredictorCorrector> pc;
 
@@ -33,7 +33,7 @@ struct FrictionRig {
     commit();
   }
   EvaluateFn eval() {
-    return [this](RodState& st, Vec3List& a, std::vector<double>& alpha, Vec3List& shell_a) {
+    return [this](State& st, Vec3List& a, std::vector<double>& alpha, Vec3List& shell_a) {
       f.reset(st);
       double omega2 = 0;
       for (auto& term : terms) {
@@ -56,7 +56,7 @@ struct FrictionRig {
     };
   }
   static PositionsChangedFn moved() {
-    return [](RodState& st) { update_reference_frames(st); };
+    return [](State& st) { update_reference_frames(st); };
   }
   void commit() {
     for (auto& term : terms) term->commit();

@@ -85,7 +85,7 @@ struct WallRig : FrictionRig {
     wall = w.get();
     terms.push_back(std::move(w));
     F_N = kNodes * m * kG;
-    external = [this, m](double t, const RodState& st, RodForces& f) {
+    external = [this, m](double t, const State& st, Forces& f) {
       const Vec3 P = pull ? pull(t) : Vec3::Zero();
       for (int i = 0; i < kNodes; ++i) f.f[i] += m * kG * st.x[i].normalized() + P / kNodes;
     };
@@ -297,7 +297,7 @@ struct CrossRig : FrictionRig {
     auto t = std::make_unique<SelfContactTerm>(sp);
     self = t.get();
     terms.push_back(std::move(t));
-    external = [this, m](double t, const RodState&, RodForces& f) {
+    external = [this, m](double t, const State&, Forces& f) {
       last_friction_x = f.f[0][0] + f.f[1][0];
       const double P = pull_x ? pull_x(t) : 0.0;
       for (int i = 0; i < 2; ++i) f.f[i] += Vec3(0.5 * P, 0, -m * kG);
@@ -341,7 +341,7 @@ TEST(Friction, HistorySurvivesSlidingAcrossElementBoundaries) {
   SelfContactTerm frictionless(sp);
   sp.friction = friction_params();
   SelfContactTerm with_friction(sp);
-  RodState s = rig.s;
+  State s = rig.s;
   const double V = 0.05, dt = 2e-6;  // [m/s], [s]
   s.v[0] = s.v[1] = Vec3(V, 0, 0);
   double weakest = 1e30, normal = 0;
@@ -351,7 +351,7 @@ TEST(Friction, HistorySurvivesSlidingAcrossElementBoundaries) {
     s.x[0] += dt * s.v[0];
     s.x[1] += dt * s.v[1];
     if (std::floor(s.x[0][0] / kEll) != std::floor(x_old / kEll)) ++joints;
-    RodForces f0, f1;
+    Forces f0, f1;
     f0.reset(s);
     f1.reset(s);
     frictionless.accumulate(s, f0);

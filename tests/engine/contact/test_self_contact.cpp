@@ -42,7 +42,7 @@ SelfContactParams params(double element_length, double zeta = 0.0) {
 // edge b. With delta <= 0.06 r the neighbours of a and b stay > 2 r from the other edge (the
 // nearest is sqrt((0.3 l)^2 + h^2) > l), so (a, b) is the only contact.
 constexpr int kEdgeA = 4, kEdgeB = 35;
-RodState crossing_rod(double delta, double joint_shift = 0.0) {
+State crossing_rod(double delta, double joint_shift = 0.0) {
   const double l = 2.0 * kMat.r;
   const double h = (2.0 * kMat.r - delta) / l;
   const double y0 = -4.3 + joint_shift;
@@ -70,11 +70,11 @@ TEST(SelfContact, CrossingEdgesHertzForceAndSplit) {
   const double k = 4.0 / 3.0 * E_star * std::sqrt(r);
   for (double d : {0.01, 0.03, 0.06}) {
     const double delta = d * r;
-    const RodState s = crossing_rod(delta);
+    const State s = crossing_rod(delta);
     ASSERT_EQ(s.num_edges(), kEdgeB + 5);
     SelfContactTerm term(params(2.0 * r));
     double U = 0;
-    const RodForces f = testing::forces_of(term, s, &U);
+    const Forces f = testing::forces_of(term, s, &U);
     ASSERT_EQ(term.contacts(), 1) << d;
     const WireContact& c = term.contact_list()[0];
     EXPECT_EQ(c.a, kEdgeA);
@@ -104,7 +104,7 @@ TEST(SelfContact, CrossingEdgesHertzForceAndSplit) {
 
 // Dense random state: a random walk of edge length ~l = r confined to a ball of radius 3 l, so
 // the wire crosses itself many times at generic angles (closest points unique).
-RodState dense_rod(int n, unsigned seed) {
+State dense_rod(int n, unsigned seed) {
   const double l = kMat.r;
   const double Rb = 3.0 * l;
   std::mt19937_64 rng(seed);
@@ -126,7 +126,7 @@ RodState dense_rod(int n, unsigned seed) {
 
 // Brute-force set of touching pairs: every pair of active edges (at least one dynamic node)
 // more than the exclusion apart whose axes are closer than 2 r.
-std::vector<std::pair<int, int>> brute_force_contacts(const RodState& s, int exclusion) {
+std::vector<std::pair<int, int>> brute_force_contacts(const State& s, int exclusion) {
   std::vector<std::pair<int, int>> out;
   const int ne = std::min(s.n_free, s.num_edges());
   for (int a = 0; a < ne; ++a) {
@@ -147,7 +147,7 @@ std::vector<std::pair<int, int>> term_contacts(const SelfContactTerm& term) {
 
 // The term's contact list at s (after its accumulate) equals the brute-force set of touching
 // edge pairs, contacts() = N is its size, and a fresh term (full rebuild) finds the same set.
-void expect_matches_brute_force(const SelfContactTerm& term, const RodState& s) {
+void expect_matches_brute_force(const SelfContactTerm& term, const State& s) {
   const auto got = term_contacts(term);
   const auto all = brute_force_contacts(s, term.exclusion());
   EXPECT_EQ(got, all);
@@ -161,7 +161,7 @@ void expect_matches_brute_force(const SelfContactTerm& term, const RodState& s) 
 // Criterion as for the rod terms: best of the ladder below 1e-6 relative and O(h^2) trend.
 TEST(SelfContact, GradientMatchesFiniteDifferences) {
   for (unsigned seed = 1; seed <= 3; ++seed) {
-    const RodState s = dense_rod(40, seed);
+    const State s = dense_rod(40, seed);
     SelfContactTerm term(params(kMat.r, 0.5));
     testing::forces_of(term, s);
     std::printf("  dense rod seed %u: %d contacts\n", seed, term.contacts());
@@ -198,11 +198,11 @@ TEST(SelfContact, NeighboursWithinExclusionNeverInteract) {
                  Vec3(-2, 0.8, 0)}) {
     x.push_back(l * p);
   }
-  RodState s = testing::rod_through(x);  // edges 0 .. 4
+  State s = testing::rod_through(x);  // edges 0 .. 4
   // Geometric overlap of the legs, e.g. edges 0 and 4 (0.8 r apart).
   EXPECT_LT(segment_segment_closest(s.x[0], s.x[1], s.x[4], s.x[5]).dist2, 4 * l * l);
   double U = 1;
-  RodForces f = testing::forces_of(term, s, &U);
+  Forces f = testing::forces_of(term, s, &U);
   EXPECT_EQ(term.contacts(), 0);
   EXPECT_EQ(U, 0.0);
   EXPECT_EQ(term.energy(s), 0.0);
@@ -225,7 +225,7 @@ TEST(SelfContact, NeighboursWithinExclusionNeverInteract) {
 TEST(SelfContact, VerletListRebuildsOnlyWhenNeeded) {
   const double skin = params(kMat.r).skin;
   for (unsigned seed = 1; seed <= 3; ++seed) {
-    const RodState s0 = dense_rod(60, seed + 10);
+    const State s0 = dense_rod(60, seed + 10);
     SelfContactTerm term(params(kMat.r));
     testing::forces_of(term, s0);
     EXPECT_EQ(term.rebuilds(), 1);
@@ -239,23 +239,23 @@ TEST(SelfContact, VerletListRebuildsOnlyWhenNeeded) {
     // exceeds what their nodes moved since, so small moves exercise that skip; forces must be
     // bitwise those of a fresh term (which evaluates every pair).
     for (double move : {0.05, 0.15, 0.3, 0.4, 0.49}) {
-      RodState s = s0;
+      State s = s0;
       for (auto& p : s.x) p += move * skin * Vec3(g(rng), g(rng), g(rng)).normalized();
       double U = 0;
-      const RodForces f = testing::forces_of(term, s, &U);
+      const Forces f = testing::forces_of(term, s, &U);
       EXPECT_EQ(term.rebuilds(), 1) << "no rebuild below skin / 2";
       expect_matches_brute_force(term, s);
       EXPECT_EQ(term.energy(s), U);
       SelfContactTerm fresh(params(kMat.r));
       double U_fresh = 0;
-      const RodForces f_fresh = testing::forces_of(fresh, s, &U_fresh);
+      const Forces f_fresh = testing::forces_of(fresh, s, &U_fresh);
       EXPECT_EQ(U, U_fresh);
       for (size_t i = 0; i < f.f.size(); ++i) EXPECT_EQ(f.f[i], f_fresh.f[i]) << i;
       changed += brute_force_contacts(s, term.exclusion()) != set0;
     }
     EXPECT_GT(changed, 0) << "the perturbations should change the contact set";
 
-    RodState s = s0;
+    State s = s0;
     s.x[17] += 0.51 * skin * Vec3(1, 1, 0).normalized();
     testing::forces_of(term, s);
     EXPECT_EQ(term.rebuilds(), 2) << "a node moved beyond skin / 2 rebuilds";
@@ -285,7 +285,7 @@ TEST(SelfContact, CrossingEnergyNearAndAwayFromJoints) {
   // Shifts (in l) put the joint between edges b and b+1 at y = (0.7 + shift) l from the
   // crossing.
   for (double shift : {-0.9, -0.75, -0.7 - 1e-9, -0.7, -0.7 + 1e-9, -0.65, -0.5, -0.3, 0.0}) {
-    const RodState s = crossing_rod(delta, shift);
+    const State s = crossing_rod(delta, shift);
     SelfContactTerm term(params(l));
     double U = 0;
     testing::forces_of(term, s, &U);
@@ -324,7 +324,7 @@ TEST(SelfContact, EnergyContinuousAtAConcaveJoint) {
                           Vec3(4, 4 * k, 6.5), Vec3(xp, yp, 6.5), Vec3(xp, yp, -3.5)};
     Vec3List pts;
     for (const Vec3& p : way) pts.push_back(l * p);
-    const RodState s = testing::rod_through(testing::polyline(pts, 1.05 * l));
+    const State s = testing::rod_through(testing::polyline(pts, 1.05 * l));
     SelfContactTerm term(params(l));
     testing::forces_of(term, s, &U_side[side]);
     std::printf("  concave joint, x_p = k y_p %+.0e l: U = %.9e J, %d contacts\n",
@@ -339,7 +339,7 @@ TEST(SelfContact, EnergyContinuousAtAConcaveJoint) {
 TEST(SelfContact, DashpotOnApproachNeverAttractive) {
   const double r = kMat.r, zeta = 0.5;
   const SelfContactParams p = params(2.0 * r, zeta);
-  RodState s = crossing_rod(0.03 * r);
+  State s = crossing_rod(0.03 * r);
   SelfContactTerm term(p);
   testing::forces_of(term, s);
   ASSERT_EQ(term.contacts(), 1);

@@ -55,8 +55,8 @@ ShellMesh merge(const ShellMesh& a, const ShellMesh& b, const Vec3& b_shift) {
 }
 
 // A state of the shell alone (no wire), at rest.
-RodState shell_state(const Vec3List& x) {
-  RodState s;
+State shell_state(const Vec3List& x) {
+  State s;
   s.shell_x = x;
   s.shell_v.assign(x.size(), Vec3::Zero());
   return s;
@@ -70,7 +70,7 @@ Vec3 rotate_z(const Vec3& p, double a) {
 // Max |F + dU/dx| / max |F| over every coordinate (tests/engine/fd_harness.hpp; here the shell
 // vertices), by central differences at steps hrel * kT; prints the ladder and the observed
 // orders log10(err_k / err_k+1).
-std::vector<double> fd_ladder(ShellSelfContactTerm& term, const RodState& s) {
+std::vector<double> fd_ladder(ShellSelfContactTerm& term, const State& s) {
   const testing::FdReport r = testing::fd_check(term, s, kT, {1e-2, 1e-3, 1e-4, 1e-5, 1e-6});
   testing::print_report(r);
   testing::print_orders(r);
@@ -130,7 +130,7 @@ TEST(ShellSelfContact, FlatContactIsOneContactPerVertex) {
     const Vec3 c = trial < 2 ? Vec3::Zero() : Vec3(u(rng), u(rng), 0);
     FlatPair fp(d, a, c);
     ShellSelfContactTerm term(fp.mesh, p);
-    const RodState s = shell_state(fp.x);
+    const State s = shell_state(fp.x);
     double expected = 0;
     for (int v = 0; v < fp.mesh.num_vertices(); ++v) {
       const double dist = v < fp.nB ? fp.distance_to_A(fp.x[v], d, a, c) : d;
@@ -155,8 +155,8 @@ TEST(ShellSelfContact, FlatContactIsOneContactPerVertex) {
     for (const Case& cs : cases) {
       FlatPair fp(d, cs.angle, cs.c);
       ShellSelfContactTerm term(fp.mesh, p);
-      RodState s = shell_state(fp.x);
-      RodForces f;
+      State s = shell_state(fp.x);
+      Forces f;
       f.reset(s);
       term.accumulate(s, f);
       double Fz = 0, per_vertex = 0;
@@ -210,8 +210,8 @@ TEST(ShellSelfContact, GradientVertexTriangle) {
                 0.05 * kT * Vec3(g(rng), g(rng), g(rng)));
   }
   ShellSelfContactTerm term(mesh, params());
-  const RodState s = shell_state(x);
-  RodForces f;
+  const State s = shell_state(x);
+  Forces f;
   f.reset(s);
   term.accumulate(s, f);
   ASSERT_GT(term.vt_contacts(), 10);
@@ -241,8 +241,8 @@ TEST(ShellSelfContact, GradientEdgeEdge) {
   }
   for (auto& p : x) p += 0.02 * h * Vec3(g(rng), g(rng), g(rng));
   ShellSelfContactTerm term(mesh, params(h));
-  const RodState s = shell_state(x);
-  RodForces f;
+  const State s = shell_state(x);
+  Forces f;
   f.reset(s);
   term.accumulate(s, f);
   ASSERT_EQ(term.ee_contacts(), 1);
@@ -274,8 +274,8 @@ Vec3List folded_sheet(const ShellMesh& m, double rho, unsigned seed) {
 TEST(ShellSelfContact, GradientFoldedSheet) {
   const ShellMesh mesh = flat_square(8e-3, 8);
   ShellSelfContactTerm term(mesh, params());
-  const RodState s = shell_state(folded_sheet(mesh, 0.4 * kT, 9));
-  RodForces f;
+  const State s = shell_state(folded_sheet(mesh, 0.4 * kT, 9));
+  Forces f;
   f.reset(s);
   term.accumulate(s, f);
   std::printf("  folded: %d VT, %d EE contacts\n", term.vt_contacts(), term.ee_contacts());
@@ -297,11 +297,11 @@ TEST(ShellSelfContact, ActionEqualsReaction) {
     p.friction.stiffness_ratio = 0.8;
     p.friction.damping_ratio = 0.5;
     ShellSelfContactTerm term(mesh, p);
-    RodState s = shell_state(folded_sheet(mesh, 0.35 * kT, 4));
+    State s = shell_state(folded_sheet(mesh, 0.35 * kT, 4));
     std::mt19937_64 rng(8);
     std::normal_distribution<double> g(0.0, 1.0);
     for (auto& v : s.shell_v) v = 0.01 * Vec3(g(rng), g(rng), g(rng));
-    RodForces f;
+    Forces f;
     for (int step = 0; step < 3; ++step) {  // a few steps, so the springs are loaded
       term.begin_trial(1e-4);
       f.reset(s);
@@ -338,14 +338,14 @@ TEST(ShellSelfContact, RestSphereFeelsNothing) {
     p.exclusion = ShellSelfContactTerm::suggested_exclusion(mesh, h);
     p.skin = 0.15e-3;
     ShellSelfContactTerm term(mesh, p);
-    RodState s = shell_state(mesh.rest);
+    State s = shell_state(mesh.rest);
     std::mt19937_64 rng(2);
     std::normal_distribution<double> g(0.0, 1.0);
     for (bool perturbed : {false, true}) {
       if (perturbed) {
         for (auto& x : s.shell_x) x += 0.02e-3 * Vec3(g(rng), g(rng), g(rng));
       }
-      RodForces f;
+      Forces f;
       f.reset(s);
       const double U = term.accumulate(s, f);
       double fmax = 0;
@@ -358,7 +358,7 @@ TEST(ShellSelfContact, RestSphereFeelsNothing) {
     // Idle cost: the Verlet displacement check alone (no candidates), printed (speed is
     // measured in bench_shell, not asserted); that no broad phase ran while idle is checked
     // structurally below: the one rebuild counted is the forced one.
-    RodForces f;
+    Forces f;
     f.reset(s);
     const long builds = term.rebuilds();
     const int n = 20000;
@@ -388,7 +388,7 @@ TEST(ShellSelfContact, RestSphereFeelsNothing) {
 struct PatchRig {
   ShellMesh mesh;
   int nB = 0;
-  RodState s;
+  State s;
   std::unique_ptr<ShellSelfContactTerm> term;
   std::vector<double> mass;
   std::vector<std::array<int, 2>> springs;
@@ -397,7 +397,7 @@ struct PatchRig {
   double spring_zeta = 0.5;
   std::function<Vec3(int v, double t)> external;  // body and pulling forces on A [N]
   double t = 0, dt_max = 2e-5;
-  RodForces f;
+  Forces f;
 
   PatchRig(const ShellSelfContactParams& p, double z, const Vec3& offset) {
     const ShellMesh B = flat_square(8e-3, 8), A = flat_square(3e-3, 3);

@@ -42,7 +42,7 @@ struct Wall {
 };
 
 // A "rod" of loose nodes (the wall term looks at nodes only); all dynamic, at rest.
-RodState nodes(const Vec3List& x) {
+State nodes(const Vec3List& x) {
   return testing::rod_through(x);
 }
 
@@ -68,10 +68,10 @@ TEST(SphereWall, GradientMatchesFiniteDifferences) {
     // Rim: 0.95 r from the rim circle (delta = 0.05 r), inside the hole cylinder, 0.3 r above.
     x.push_back(Vec3(w.r_h - std::sqrt(0.95 * 0.95 - 0.3 * 0.3) * w.r, 0.0, w.z_rim + 0.3 * w.r));
     x.push_back(w.at_overlap(Vec3(0, 1, 0), 0.05 * w.r));  // guide node
-    RodState s = nodes(x);
+    State s = nodes(x);
     s.n_free = s.num_nodes() - 1;
     SphereWallTerm term(w.params(0.5));
-    RodForces f = testing::forces_of(term, s);
+    Forces f = testing::forces_of(term, s);
     EXPECT_EQ(term.contacts(), 9) << seed;  // eight on the wall, one on the rim
     EXPECT_EQ(f.f.back(), Vec3::Zero());
     const auto rep = testing::fd_check(term, s, w.r, testing::default_fd_steps());
@@ -92,10 +92,10 @@ TEST(SphereWall, HertzForceOfOneNode) {
   const double k = 4.0 / 3.0 * w.E_star * std::sqrt(w.R_star);
   double prev_F = 0, prev_delta = 0;
   for (double d : {0.01, 0.02, 0.05, 0.1, 0.2}) {
-    RodState s = nodes({w.at_overlap(dir, d * w.r)});
+    State s = nodes({w.at_overlap(dir, d * w.r)});
     SphereWallTerm term(w.params());
     double U = 0;
-    const RodForces f = testing::forces_of(term, s, &U);
+    const Forces f = testing::forces_of(term, s, &U);
     const Vec3& x = s.x[0];
     const long double norm_ld =
         std::sqrt((long double)x[0] * x[0] + (long double)x[1] * x[1] + (long double)x[2] * x[2]);
@@ -113,10 +113,10 @@ TEST(SphereWall, HertzForceOfOneNode) {
     prev_delta = delta;
   }
   // Just inside the contact distance: nothing.
-  RodState s = nodes({w.at_overlap(dir, -1e-3 * w.r)});
+  State s = nodes({w.at_overlap(dir, -1e-3 * w.r)});
   SphereWallTerm term(w.params());
   double U = 1;
-  const RodForces f = testing::forces_of(term, s, &U);
+  const Forces f = testing::forces_of(term, s, &U);
   EXPECT_EQ(U, 0.0);
   EXPECT_EQ(f.f[0], Vec3::Zero());
   EXPECT_EQ(term.contacts(), 0);
@@ -129,9 +129,9 @@ TEST(SphereWall, HoleAndRim) {
   const Wall w;
   SphereWallTerm term(w.params());
   for (double dz : {1.5, 0.5, 0.0, -0.5, -3.0}) {  // [r] relative to the rim plane
-    RodState s = nodes({Vec3(0, 0, w.z_rim + dz * w.r)});
+    State s = nodes({Vec3(0, 0, w.z_rim + dz * w.r)});
     double U = 1;
-    const RodForces f = testing::forces_of(term, s, &U);
+    const Forces f = testing::forces_of(term, s, &U);
     EXPECT_EQ(U, 0.0) << dz;
     EXPECT_EQ(f.f[0], Vec3::Zero()) << dz;
     EXPECT_EQ(term.contacts(), 0);
@@ -140,15 +140,15 @@ TEST(SphereWall, HoleAndRim) {
   for (double beta : {0.0, 1.0, 2.5, -2.0}) {
     const Vec3 radial(std::cos(beta), std::sin(beta), 0.0);
     // In the rim plane, 0.8 r from the rim circle: delta = 0.2 r, force exactly towards the axis.
-    RodState s = nodes({(w.r_h - 0.8 * w.r) * radial + Vec3(0, 0, w.z_rim)});
-    const RodForces f = testing::forces_of(term, s);
+    State s = nodes({(w.r_h - 0.8 * w.r) * radial + Vec3(0, 0, w.z_rim)});
+    const Forces f = testing::forces_of(term, s);
     EXPECT_EQ(term.contacts(), 1);
     // 1e-10: delta = r - dist with dist formed from O(R) coordinates (eps R / (0.2 r) ~ 1e-14).
     EXPECT_NEAR(f.f[0].norm() / (k_rim * std::pow(0.2 * w.r, 1.5)), 1.0, 1e-10) << beta;
     EXPECT_LT((f.f[0].normalized() + radial).norm(), 1e-10) << beta;
     // Above the rim plane the force also lifts the node into the sphere.
-    RodState s2 = nodes({(w.r_h - 0.7 * w.r) * radial + Vec3(0, 0, w.z_rim + 0.3 * w.r)});
-    const RodForces f2 = testing::forces_of(term, s2);
+    State s2 = nodes({(w.r_h - 0.7 * w.r) * radial + Vec3(0, 0, w.z_rim + 0.3 * w.r)});
+    const Forces f2 = testing::forces_of(term, s2);
     EXPECT_LT(f2.f[0].dot(radial), 0.0);
     EXPECT_GT(f2.f[0][2], 0.0);
   }
@@ -164,14 +164,14 @@ TEST(SphereWall, GuideNodesAndContactCount) {
     x.push_back(w.at_overlap(Vec3(std::cos(a), std::sin(a), 0.2).normalized(),
                              (i % 2 ? 0.05 : -0.05) * w.r));
   }
-  RodState s = nodes(x);  // touching: nodes 1, 3, 5
+  State s = nodes(x);  // touching: nodes 1, 3, 5
   SphereWallTerm term(w.params());
   double U_all = 0;
   testing::forces_of(term, s, &U_all);
   EXPECT_EQ(term.contacts(), 3);
   s.n_free = 4;  // nodes 4, 5 are guide nodes
   double U = 0;
-  const RodForces f = testing::forces_of(term, s, &U);
+  const Forces f = testing::forces_of(term, s, &U);
   EXPECT_EQ(term.contacts(), 2);
   EXPECT_EQ(f.f[4], Vec3::Zero());
   EXPECT_EQ(f.f[5], Vec3::Zero());
@@ -190,15 +190,15 @@ TEST(SphereWall, DashpotOnApproachOnly) {
   SphereWallTerm term(p);
   const Vec3 n = Vec3(0.6, 0.0, 0.8);
   const double delta = 0.05 * w.r;
-  RodState s = nodes({w.at_overlap(n, delta)});
-  const RodForces f0 = testing::forces_of(term, s);
+  State s = nodes({w.at_overlap(n, delta)});
+  const Forces f0 = testing::forces_of(term, s);
   const double F = f0.f[0].norm();
   const double k_c = 1.5 * F / delta;
   const double eta = 2.0 * zeta * std::sqrt(k_c * p.node_mass);
   const Vec3 tangential = Vec3(0.8, 0.0, -0.6);
   for (double u : {1e-3, 1e-2, -1e-3, -1e-2, -1.0, -100.0}) {
     s.v[0] = u * n + 0.3 * tangential;
-    const RodForces f = testing::forces_of(term, s);
+    const Forces f = testing::forces_of(term, s);
     const double fn = -f.f[0].dot(n);  // push away from the wall, >= 0
     EXPECT_GE(fn, 0.0) << u;
     EXPECT_LT((f.f[0] + fn * n).norm(), 1e-12 * F);  // normal only

@@ -40,7 +40,7 @@ ShellMesh bumpy_square(std::mt19937_64& rng) {
 
 // n wire nodes one r apart along x, centred on x = 0, y jittered by 0.4 r, at heights
 // z0 + dz g (g standard normal), over the mesh at rest.
-RodState wire_across(const ShellMesh& mesh, int n, double z0, double dz, std::mt19937_64& rng) {
+State wire_across(const ShellMesh& mesh, int n, double z0, double dz, std::mt19937_64& rng) {
   std::normal_distribution<double> g(0.0, 1.0);
   Vec3List pts;
   for (int i = 0; i < n; ++i) {
@@ -48,7 +48,7 @@ RodState wire_across(const ShellMesh& mesh, int n, double z0, double dz, std::mt
     const double z = z0 + dz * g(rng);
     pts.push_back(Vec3((i - 0.5 * (n - 1)) * kR, y, z));
   }
-  RodState s = wire_over(mesh, pts.front(), pts.back(), n);
+  State s = wire_over(mesh, pts.front(), pts.back(), n);
   s.x = pts;
   return s;
 }
@@ -65,13 +65,13 @@ TEST(WireShell, OneContactPerEdgeAnywhereOnAFlatMesh) {
     const double t = trial < 3 ? trial * M_PI / 4 : ang(rng);  // incl. along the mesh lines
     const Vec3 d = kR * Vec3(std::cos(t), std::sin(t), 0);
     const Vec3 c0 = trial == 1 ? Vec3(0, 0, z) : c;  // exactly over a vertex
-    RodState s = wire_over(mesh, c0 - d, c0 + d, 2);
+    State s = wire_over(mesh, c0 - d, c0 + d, 2);
     WireShellTerm term(mesh, params());
     const double U = term.energy(s);
     EXPECT_NEAR(U / hertz_energy(delta), 1.0, 1e-9) << "trial " << trial;
   }
   // Two edges: two contacts (the wire side is per edge).
-  RodState s = wire_over(mesh, Vec3(-1.3 * kR, 0.2 * kR, z), Vec3(1.1 * kR, 0.3 * kR, z), 3);
+  State s = wire_over(mesh, Vec3(-1.3 * kR, 0.2 * kR, z), Vec3(1.1 * kR, 0.3 * kR, z), 3);
   WireShellTerm term(mesh, params());
   EXPECT_NEAR(term.energy(s) / hertz_energy(delta), 2.0, 1e-9);
 }
@@ -83,7 +83,7 @@ TEST(WireShell, BoundaryEdgeOfTheMeshIsAContact) {
   const double L = 10 * kR, delta = 0.02 * kR;
   // Vertical wire beside the boundary x = L, at distance r + h - delta from it.
   const double x = L + kR + kH - delta;
-  RodState s = wire_over(mesh, Vec3(x, 0.3 * kR, -kR), Vec3(x, 0.3 * kR, kR), 2);
+  State s = wire_over(mesh, Vec3(x, 0.3 * kR, -kR), Vec3(x, 0.3 * kR, kR), 2);
   WireShellTerm term(mesh, params());
   EXPECT_NEAR(term.energy(s) / hertz_energy(delta), 1.0, 1e-9);
 }
@@ -94,9 +94,9 @@ TEST(WireShell, BoundaryEdgeOfTheMeshIsAContact) {
 TEST(WireShell, GradientMatchesFiniteDifferencesAndBalances) {
   std::mt19937_64 rng(7);
   const ShellMesh mesh = bumpy_square(rng);
-  RodState s = wire_across(mesh, 8, kR + kH - 0.05 * kR, -0.05 * kR, rng);
+  State s = wire_across(mesh, 8, kR + kH - 0.05 * kR, -0.05 * kR, rng);
   WireShellTerm term(mesh, params());
-  RodForces f;
+  Forces f;
   f.reset(s);
   term.accumulate(s, f);
   ASSERT_GT(term.contacts(), 3);
@@ -122,23 +122,23 @@ TEST(WireShell, VerletSkipGivesTheFreshTermsForces) {
   std::normal_distribution<double> g(0.0, 1.0);
   const ShellMesh mesh = bumpy_square(rng);
   // Heights from touching (overlap ~0.3 r) to clear of contact by ~0.3 r.
-  const RodState s0 = wire_across(mesh, 10, kR + kH, 0.15 * kR, rng);
+  const State s0 = wire_across(mesh, 10, kR + kH, 0.15 * kR, rng);
   const double skin = params().skin;
   WireShellTerm term(mesh, params());
-  RodForces f;
+  Forces f;
   f.reset(s0);
   term.accumulate(s0, f);
   const int contacts0 = term.contacts();
   int changed = 0;
   for (double move : {0.02, 0.1, 0.2, 0.3, 0.45, 0.49}) {
-    RodState s = s0;
+    State s = s0;
     for (auto& p : s.x) p += move * skin * Vec3(g(rng), g(rng), g(rng)).normalized();
     for (auto& p : s.shell_x) p += move * skin * Vec3(g(rng), g(rng), g(rng)).normalized();
     f.reset(s);
     const double U = term.accumulate(s, f);
     EXPECT_EQ(term.energy(s), U) << move;
     WireShellTerm fresh(mesh, params());
-    RodForces ff;
+    Forces ff;
     ff.reset(s);
     const double U_fresh = fresh.accumulate(s, ff);
     EXPECT_EQ(U, U_fresh) << move;
@@ -177,9 +177,9 @@ TEST(WireShell, CouplingBoundCoversTheContactsLargestMode) {
       {Vec3(1.3 * kR, 0.6 * kR, z), Vec3(1.3 * kR, 0.6 * kR, z) + up, 4.0},
   };
   for (const Case& c : cases) {
-    RodState s = wire_over(mesh, c.a, c.b, 2);
+    State s = wire_over(mesh, c.a, c.b, 2);
     WireShellTerm term(mesh, p);
-    RodForces f;
+    Forces f;
     f.reset(s);
     term.accumulate(s, f);
     ASSERT_GT(term.contacts(), 0);
@@ -192,7 +192,7 @@ TEST(WireShell, CouplingBoundCoversTheContactsLargestMode) {
     };
     auto forces = [&](Eigen::VectorXd& g) {
       WireShellTerm fresh(mesh, p);
-      RodForces ff;
+      Forces ff;
       ff.reset(s);
       fresh.accumulate(s, ff);
       g.resize(n);

@@ -68,7 +68,7 @@ struct ShellRig : FrictionRig {
     terms.push_back(std::make_unique<BendTerm>(kMat.EI()));
     terms.push_back(std::make_unique<WireShellTerm>(mesh, p));
     F_N = kNodes * m * kG;
-    external = [this, m](double t, const RodState&, RodForces& f) {
+    external = [this, m](double t, const State&, Forces& f) {
       const Vec3 P = pull ? pull(t) : Vec3::Zero();
       for (int i = 0; i < kNodes; ++i) f.f[i] += Vec3(0, 0, -m * kG) + P / kNodes;
     };

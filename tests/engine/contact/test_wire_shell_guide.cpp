@@ -39,8 +39,8 @@ double hertz_energy(double delta) {
 
 // A wire of one free node above the guide's top (0, 0, top) and one more guide node below it
 // (n_free = 1), over the shell `mesh` at rest. The free edge ends at the top.
-RodState wire_into_guide(const ShellMesh& mesh, double top) {
-  RodState s = testing::wire_over(mesh, Vec3(0.2 * kR, 0, top + 2 * kR), Vec3(0, 0, top), 2);
+State wire_into_guide(const ShellMesh& mesh, double top) {
+  State s = testing::wire_over(mesh, Vec3(0.2 * kR, 0, top + 2 * kR), Vec3(0, 0, top), 2);
   s.x.push_back(Vec3(0, 0, top - kR));
   s.v.assign(3, Vec3::Zero());
   s.rest_length.push_back(kR);
@@ -60,7 +60,7 @@ TEST(WireShellGuide, OneContactAtTheEndAnywhereOnAFlatMesh) {
                        : trial == 1 ? Vec3(kR, 0, 0)  // over an edge's midpoint
                                     : Vec3(u(rng), u(rng), 0.0);  // anywhere
     for (auto& p : mesh.rest) p += shift;
-    const RodState s = wire_into_guide(mesh, bottom + 6 * kR);
+    const State s = wire_into_guide(mesh, bottom + 6 * kR);
     WireShellTerm term(mesh, params(bottom));
     EXPECT_NEAR(term.energy(s) / hertz_energy(delta), 1.0, 1e-9) << "trial " << trial;
     EXPECT_GT(term.guide_contacts(), 0);
@@ -77,7 +77,7 @@ TEST(WireShellGuide, FaceBesideTheAxisAndClampedFacesTakeNoPart) {
   mesh.faces = {{0, 1, 2}};
   mesh.clamped = {0, 0, 1};
   mesh.build_topology();
-  const RodState s = wire_into_guide(mesh, top);
+  const State s = wire_into_guide(mesh, top);
   WireShellTerm term(mesh, params(bottom));
   EXPECT_NEAR(term.energy(s) / hertz_energy(kDc - d), 1.0, 1e-12);
   EXPECT_EQ(term.guide_contacts(), 1);
@@ -109,9 +109,9 @@ ShellMesh curved_patch(double d, std::mt19937_64& rng) {
 TEST(WireShellGuide, ForcesAndReactionMatchFiniteDifferences) {
   std::mt19937_64 rng(9);
   const ShellMesh mesh = curved_patch(kDc - 0.08 * kR, rng);
-  const RodState s = wire_into_guide(mesh, 9 * kR);
+  const State s = wire_into_guide(mesh, 9 * kR);
   WireShellTerm term(mesh, params(0.0));
-  RodForces f;
+  Forces f;
   f.reset(s);
   term.accumulate(s, f);
   ASSERT_GT(term.guide_contacts(), 2);
@@ -129,10 +129,10 @@ TEST(WireShellGuide, VerletListAndCheckpointGiveTheFreshTermsForces) {
   std::mt19937_64 rng(13);
   std::normal_distribution<double> g(0.0, 1.0);
   const ShellMesh mesh = curved_patch(kDc - 0.02 * kR, rng);
-  const RodState s0 = wire_into_guide(mesh, 9 * kR);
+  const State s0 = wire_into_guide(mesh, 9 * kR);
   const double skin = params(0.0).skin;
   WireShellTerm term(mesh, params(0.0));
-  RodForces f;
+  Forces f;
   f.reset(s0);
   term.accumulate(s0, f);
   StateWriter out;
@@ -143,12 +143,12 @@ TEST(WireShellGuide, VerletListAndCheckpointGiveTheFreshTermsForces) {
   const int contacts0 = term.guide_contacts();
   int changed = 0;
   for (double move : {0.02, 0.1, 0.3, 0.49}) {
-    RodState s = s0;
+    State s = s0;
     s.x[1] += move * skin * Vec3(g(rng), g(rng), g(rng)).normalized();
     for (auto& p : s.shell_x) p += move * skin * Vec3(g(rng), g(rng), g(rng)).normalized();
     WireShellTerm fresh(mesh, params(0.0));
-    RodForces f1, f2, f3;
-    for (RodForces* ff : {&f1, &f2, &f3}) ff->reset(s);
+    Forces f1, f2, f3;
+    for (Forces* ff : {&f1, &f2, &f3}) ff->reset(s);
     const double U1 = term.accumulate(s, f1);
     const double U2 = restored.accumulate(s, f2);
     const double U3 = fresh.accumulate(s, f3);
@@ -189,10 +189,10 @@ TEST(WireShellGuide, AFastTriangleIsHeldOffTheGuide) {
     WireShellParams q = p;
     q.guide = guide;
     WireShellTerm term(mesh, q);
-    RodState s = wire_into_guide(mesh, top);
+    State s = wire_into_guide(mesh, top);
     Vec3 v(-V, 0, 0);
     min_dist = HUGE_VAL;
-    RodForces f;
+    Forces f;
     for (int step = 0; step < 200000; ++step) {
       s.shell_v.assign(3, v);
       f.reset(s);
@@ -236,7 +236,7 @@ TEST(WireShellGuide, ScenesHaveTheGuideClearOfTheRimAtRest) {
       EXPECT_TRUE(ws.guide);
       const Feeder feeder(a.feeder);
       EXPECT_NEAR(ws.guide_bottom_z, feeder.z_hole() - 10.0 * sp.R(), 1e-12 * sp.R());
-      RodState s = feeder.initial_state();
+      State s = feeder.initial_state();
       s.shell_x = a.mesh->rest;
       s.shell_v.assign(s.shell_x.size(), Vec3::Zero());
       ASSERT_LT(s.n_free, s.num_nodes());

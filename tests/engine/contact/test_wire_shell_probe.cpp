@@ -47,8 +47,7 @@ TEST(WireShellProbe, FlatPatchGivesHertzForcePerEdge) {
   const ShellMesh mesh = flat_square(20 * kR, 10);  // 2 r squares, split in two triangles
   for (double delta : {0.01 * kR, 0.05 * kR, 0.2 * kR}) {
     const double z = kR + kH - delta;
-    const RodState s =
-        wire_over(mesh, Vec3(-3.1 * kR, 0.7 * kR, z), Vec3(2.9 * kR, 1.3 * kR, z), 5);
+    const State s = wire_over(mesh, Vec3(-3.1 * kR, 0.7 * kR, z), Vec3(2.9 * kR, 1.3 * kR, z), 5);
     const Vec3List shell_f = wire_shell_vertex_forces(mesh, params(), s);
     ASSERT_EQ(shell_f.size(), mesh.rest.size());
     const double hertz = 4.0 / 3.0 * params().E_star * std::sqrt(kR) * std::pow(delta, 1.5);
@@ -72,7 +71,7 @@ TEST(WireShellProbe, FlatPatchGivesHertzForcePerEdge) {
     WireShellParams p = params();
     p.friction = FrictionParams{};
     WireShellTerm term(mesh, p);
-    RodForces f;
+    Forces f;
     f.reset(s);
     term.accumulate(s, f);
     for (std::size_t v = 0; v < shell_f.size(); ++v) EXPECT_EQ(f.shell_f[v], shell_f[v]) << v;
@@ -84,7 +83,7 @@ TEST(WireShellProbe, FlatPatchGivesHertzForcePerEdge) {
 TEST(WireShellProbe, NoContactNoForce) {
   const ShellMesh mesh = flat_square(20 * kR, 10);
   const double z = 1.01 * (kR + kH);
-  const RodState s = wire_over(mesh, Vec3(-3 * kR, 0, z), Vec3(3 * kR, 0, z), 4);
+  const State s = wire_over(mesh, Vec3(-3 * kR, 0, z), Vec3(3 * kR, 0, z), 4);
   for (const Vec3& f : wire_shell_vertex_forces(mesh, params(), s)) EXPECT_EQ(f, Vec3::Zero());
 }
 

@@ -22,8 +22,8 @@ struct FreeRod {
   StretchTerm stretch{mat.EA()};
   BendTerm bend{mat.EI()};
   RodDamping damping;
-  RodState s;
-  RodForces f;
+  State s;
+  Forces f;
 
   FreeRod(int n, const WireMass& m, const DampingParams& d) : mass(m), damping(d) {
     std::mt19937_64 rng(7);
@@ -48,7 +48,7 @@ struct FreeRod {
   }
   // Node mass rho A l at a density [kg].
   double node_mass(double density) const { return density * mat.A * ell; }
-  double evaluate(RodState& st, Vec3List& a, std::vector<double>& alpha, Vec3List&) {
+  double evaluate(State& st, Vec3List& a, std::vector<double>& alpha, Vec3List&) {
     f.reset(st);
     stretch.accumulate(st, f);
     bend.accumulate(st, f);
@@ -70,10 +70,10 @@ struct FreeRod {
   double run(const StepControl& c, int steps, int* increases = nullptr, double* left = nullptr,
              double* elapsed = nullptr) {
     PredictorCorrector pc(c, mat.r);
-    auto eval = [&](RodState& st, Vec3List& a, std::vector<double>& al, Vec3List& sa) {
+    auto eval = [&](State& st, Vec3List& a, std::vector<double>& al, Vec3List& sa) {
       return evaluate(st, a, al, sa);
     };
-    auto moved = [](RodState&) {};
+    auto moved = [](State&) {};
     pc.initialise(s, eval, moved);
     const double E0 = total_energy();
     double worst = 0.0, prev = E0, t = 0.0;

@@ -16,8 +16,8 @@ namespace {
 using rigs::FreeRod;
 
 // A straight wire of n nodes along z (edges l), every node moving at v0 along z.
-RodState straight_sliding(int n, double ell, double v0) {
-  RodState s;
+State straight_sliding(int n, double ell, double v0) {
+  State s;
   for (int i = 0; i < n; ++i) s.x.push_back(Vec3(0, 0, i * ell));
   s.v.assign(n, Vec3(0, 0, v0));
   s.rest_length.assign(n - 1, ell);
@@ -41,9 +41,9 @@ TEST(Damping, RelativeFormLeavesAnAxialSlideFreeAbsoluteDragsIt) {
   // the relative form exerts nothing; the absolute form exerts -c v0 on every node (exactly) but
   // the last, which carries no node drag in either form (in a run it is a guide node).
   const double v0 = 0.5;
-  RodState s = straight_sliding(12, 0.5e-3, v0);
+  State s = straight_sliding(12, 0.5e-3, v0);
   for (const bool absolute : {false, true}) {
-    RodForces f;
+    Forces f;
     f.reset(s);
     RodDamping(params(absolute)).add_forces(s, f);
     for (int i = 0; i < s.num_nodes(); ++i) {
@@ -59,7 +59,7 @@ TEST(Damping, AbsoluteFormDissipatesAndEqualsTheRelativeOneOnTransverseMotion) {
   // tangential velocity part, its extra torque -c_spin omega, and the power sum f.v + tau omega
   // is negative (the dashpots only take energy out).
   FreeRod rod(30, WireMass(1e-6, 0.0), params(true));
-  RodState& s = rod.s;
+  State& s = rod.s;
   std::mt19937_64 rng(3);
   std::normal_distribution<double> g(0.0, 1.0);
   for (auto& v : s.v) v = Vec3(g(rng), g(rng), g(rng));
@@ -67,7 +67,7 @@ TEST(Damping, AbsoluteFormDissipatesAndEqualsTheRelativeOneOnTransverseMotion) {
   s.omega.resize(s.num_nodes() - 1);
   for (auto& w : s.omega) w = g(rng);
   init_reference_frames(s, 0);
-  RodForces fa, fr;
+  Forces fa, fr;
   fa.reset(s);
   fr.reset(s);
   RodDamping(params(true)).add_forces(s, fa);

@@ -13,7 +13,7 @@
 #include "engine/integrate/free_rod.hpp"
 #include "engine/integrate/wire_mass.hpp"
 #include "engine/rod/material.hpp"
-#include "engine/rod/rod_state.hpp"
+#include "engine/state.hpp"
 
 namespace wirepack {
 namespace {
@@ -195,7 +195,7 @@ TEST(WireMass, ModeAndPointMasses) {
 
 // Damping forces of the bending-rate dashpot alone for a rod state with velocities v.
 Vec3List dashpot_forces(const Vec3List& x, const Vec3List& v, double eta) {
-  RodState s;
+  State s;
   s.x = x;
   s.v = v;
   s.n_free = static_cast<int>(x.size());
@@ -203,7 +203,7 @@ Vec3List dashpot_forces(const Vec3List& x, const Vec3List& v, double eta) {
   DampingParams p;
   p.eta_bending = eta;
   RodDamping d(p);
-  RodForces f;
+  Forces f;
   f.reset(s);
   d.add_forces(s, f);
   return f.f;

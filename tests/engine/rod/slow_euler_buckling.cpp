@@ -33,7 +33,7 @@ double elastica_deflection(double p) {
 int outcome(PinnedColumn& c, double P, double A0, double t_max) {
   c.reset(P, A0);
   int result = 0;
-  c.relax.run(c.s, 1e-6 * c.l, t_max, [&](const RodState&) {
+  c.relax.run(c.s, 1e-6 * c.l, t_max, [&](const State&) {
     if (c.max_deflection() > 100.0 * A0) result = 1;
     if (std::abs(c.mode_amplitude()) < 1e-2 * A0) result = -1;
     return result != 0;
@@ -81,7 +81,7 @@ TEST(EulerBucklingSlow, PostBuckledBranchMatchesElastica) {
     const double P = p * c.P_c;
     c.reset(P, 1e-3 * c.L);
     const bool done = c.relax.run(c.s, 1e-6 * c.l, 3000.0 / c.omega1,
-                                  [&](const RodState&) { return c.relax.residual < 1e-7 * P; });
+                                  [&](const State&) { return c.relax.residual < 1e-7 * P; });
     const double delta = c.max_deflection() / c.L;
     const double ref = elastica_deflection(p);
     std::printf("  p = %.2f: delta = %.5f L, elastica %.5f L (%+.3f %%), %ld steps\n", p, delta,

@@ -104,13 +104,13 @@ TEST(Bend, ForcesAreFreeOfResultantAndMoment) {
   double U = 1.0;
   const double l = 0.5e-3;
   const auto straight = testing::straight_rod(12, l, Vec3(1, 2, 3).normalized());
-  const RodForces f0 = testing::forces_of(term, straight, &U);
+  const Forces f0 = testing::forces_of(term, straight, &U);
   EXPECT_LT(std::abs(U), 1e-12 * mat.EI() / l);
   for (const Vec3& v : f0.f) EXPECT_LT(v.norm(), 1e-12 * mat.EI() / (l * l));
 
   for (unsigned seed = 1; seed <= 3; ++seed) {
-    const RodState s = testing::random_rod(20, 0.5e-3, false, seed);
-    const RodForces f = testing::forces_of(term, s);
+    const State s = testing::random_rod(20, 0.5e-3, false, seed);
+    const Forces f = testing::forces_of(term, s);
     double fmax = 0, lever = 0;
     for (int i = 0; i < s.num_nodes(); ++i) {
       fmax = std::max(fmax, f.f[i].norm());
@@ -143,7 +143,7 @@ TEST(Bend, EndMomentRollsRodIntoClosedCircle) {
   const double M = 2.0 * M_PI * mat.EI() / L;
   Vec3List x0;
   for (int k = 0; k <= N; ++k) x0.emplace_back((N - k) * l, 0.0, 0.0);
-  RodState s = rod_through(x0);
+  State s = rod_through(x0);
   s.n_free = N - 1;
 
   StretchTerm stretch(mat.EA());
@@ -155,7 +155,7 @@ TEST(Bend, EndMomentRollsRodIntoClosedCircle) {
   // Drag: critical damping of the cantilever's first mode, omega_1 = 3.516 sqrt(EI/mu) / L^2.
   const double omega1 = 3.516 * std::sqrt(mat.EI() / mu) / (L * L);
   relax.drag = 2.0 * omega1 * relax.node_mass;
-  relax.load = [M](const RodState& st, RodForces& f) {
+  relax.load = [M](const State& st, Forces& f) {
     const Vec3 e = st.x[0] - st.x[1];
     const Vec3 g = (M / e.squaredNorm()) * Vec3::UnitZ().cross(e);  // M d theta_tip / d x_0
     f.f[0] += g;
@@ -163,8 +163,8 @@ TEST(Bend, EndMomentRollsRodIntoClosedCircle) {
   };
   // Converged when the largest static force is 1e-9 of the couple force M / l.
   const double f_tol = 1e-9 * M / l;
-  const bool done = relax.run(s, 1e-3 * l, 2000.0 / omega1,
-                              [&](const RodState&) { return relax.residual < f_tol; });
+  const bool done =
+      relax.run(s, 1e-3 * l, 2000.0 / omega1, [&](const State&) { return relax.residual < f_tol; });
   std::printf("  end moment: %ld steps, t = %.1f / omega_1, residual %.2e M/l\n", relax.steps,
               relax.t * omega1, relax.residual * l / M);
   ASSERT_TRUE(done);

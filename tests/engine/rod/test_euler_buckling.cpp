@@ -45,7 +45,7 @@ double growth_rate(PinnedColumn& c, double P, double A0, double t_a, double t_b)
   int n = 0;
   c.relax.run(
       c.s, 1e-6 * c.l, t_b,
-      [&](const RodState&) {
+      [&](const State&) {
         const double t = c.relax.t;
         if (t >= t_a) {
           const double y = std::log(std::abs(c.mode_amplitude()));
@@ -95,7 +95,7 @@ TEST(EulerBuckling, ImperfectionDecaysBelowCriticalLoad) {
   for (double p : {0.9, 0.95}) {
     c.reset(p * c.P_c, A0);
     double peak = 0;
-    c.relax.run(c.s, 1e-6 * c.l, 100.0 / c.omega1, [&](const RodState&) {
+    c.relax.run(c.s, 1e-6 * c.l, 100.0 / c.omega1, [&](const State&) {
       peak = std::max(peak, c.max_deflection());
       return false;
     });
@@ -120,7 +120,7 @@ TEST(EulerBuckling, BucklesToTheElasticaAboveCriticalLoad) {
   const double P = p * c.P_c;
   c.reset(P, A0);
   const bool done = c.relax.run(c.s, 1e-6 * c.l, 1000.0 / c.omega1,
-                                [&](const RodState&) { return c.relax.residual < 1e-7 * P; });
+                                [&](const State&) { return c.relax.residual < 1e-7 * P; });
   const double delta = c.max_deflection();
   const double delta_elastica = elastica_deflection(p) * c.L;
   std::printf("  P = 1.1 P_c: delta = %.5f L (elastica %.5f L), t = %.0f / omega_1, %ld steps\n",

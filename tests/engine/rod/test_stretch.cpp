@@ -28,7 +28,7 @@ TEST(Stretch, UniformExtensionObeysHooke) {
     const int n = 15;
     std::vector<double> lbar(n - 1);
     for (auto& v : lbar) v = 0.5e-3 * u(rng);
-    RodState s;
+    State s;
     s.x.push_back(Vec3(1e-3, 2e-3, -1e-3));
     double L = 0;
     for (int j = 0; j + 1 < n; ++j) {
@@ -41,7 +41,7 @@ TEST(Stretch, UniformExtensionObeysHooke) {
 
     StretchTerm term(mat.EA());
     double U = 0;
-    const RodForces f = testing::forces_of(term, s, &U);
+    const Forces f = testing::forces_of(term, s, &U);
     const double U_exact = 0.5 * mat.EA() * e * e * L;
     EXPECT_NEAR(U / U_exact, 1.0, 1e-10) << "e = " << e;
     EXPECT_NEAR(term.energy(s) / U_exact, 1.0, 1e-10);
@@ -59,10 +59,10 @@ TEST(Stretch, UniformExtensionObeysHooke) {
 TEST(Stretch, RestStateIsStressFree) {
   const auto mat = testing::default_material();
   StretchTerm term(mat.EA());
-  RodState s = testing::random_rod(20, 0.5e-3, false, 5);
+  State s = testing::random_rod(20, 0.5e-3, false, 5);
   for (int j = 0; j + 1 < s.num_nodes(); ++j) s.rest_length[j] = (s.x[j + 1] - s.x[j]).norm();
   double U = 1.0;
-  const RodForces f = testing::forces_of(term, s, &U);
+  const Forces f = testing::forces_of(term, s, &U);
   // Round-off: strain ~1e-16, U ~ E A 1e-32 l, forces ~ E A 1e-16 (bound 1e-13 E A).
   EXPECT_LT(U, 1e-25 * mat.EA() * 0.5e-3);
   for (const Vec3& v : f.f) EXPECT_LT(v.norm(), 1e-13 * mat.EA());
@@ -74,10 +74,10 @@ TEST(Stretch, SeriesEdgesCarryTheirOwnTension) {
   const auto mat = testing::default_material();
   StretchTerm term(mat.EA());
   const double l = 0.5e-3;
-  RodState s = testing::straight_rod(3, l);
+  State s = testing::straight_rod(3, l);
   s.x[1][0] = l * 1.01;             // edge 0: eps_0 = +0.01
   s.x[2][0] = l * 1.01 + l * 0.98;  // edge 1: eps_1 = -0.02
-  const RodForces f = testing::forces_of(term, s);
+  const Forces f = testing::forces_of(term, s);
   // Tolerance 1e-10 relative, as above.
   EXPECT_NEAR(f.f[0][0] / (mat.EA() * 0.01), 1.0, 1e-10);
   EXPECT_NEAR(f.f[1][0] / (mat.EA() * (-0.02 - 0.01)), 1.0, 1e-10);

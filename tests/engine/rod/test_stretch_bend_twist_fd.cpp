@@ -57,7 +57,7 @@ TEST(RodFd, TwistWithASwivelAtTheGuideMatchesFiniteDifferences) {
   const auto mat = RodMaterial::from(WireParams{});
   for (unsigned seed = 1; seed <= 3; ++seed) {
     TwistTerm term(mat.GJ(), true);
-    RodState s = random_rod(12, 0.5e-3, true, seed);
+    State s = random_rod(12, 0.5e-3, true, seed);
     s.n_free = 9;
     expect_consistent(fd_check(term, s, 0.5e-3, default_fd_steps()));
   }

@@ -20,7 +20,7 @@ namespace {
 using testing::forces_of;
 
 // Material director m1 of edge j: ref1 rotated by theta_j about the edge tangent.
-Vec3 material_director(const RodState& s, int j) {
+Vec3 material_director(const State& s, int j) {
   const Vec3 t = (s.x[j + 1] - s.x[j]).normalized();
   return std::cos(s.theta[j]) * s.ref1[j] + std::sin(s.theta[j]) * t.cross(s.ref1[j]);
 }
@@ -36,11 +36,11 @@ TEST(Twist, UniformTwistOfStraightRod) {
   const double l = 0.5e-3;
   const int N = 30;                        // edges
   for (double k3 : {0.2, 30.0, -150.0}) {  // [rad/m]; k3 l from 1e-4 to 0.075 rad
-    RodState s = testing::straight_rod(N + 1, l, Vec3(2, -1, 0.5).normalized(), true);
+    State s = testing::straight_rod(N + 1, l, Vec3(2, -1, 0.5).normalized(), true);
     for (int j = 0; j < N; ++j) s.theta[j] = j * k3 * l;
     TwistTerm term(mat.GJ());
     double U = 0;
-    const RodForces f = forces_of(term, s, &U);
+    const Forces f = forces_of(term, s, &U);
     const double U_exact = 0.5 * mat.GJ() * k3 * k3 * (N - 1) * l;
     EXPECT_NEAR(U / U_exact, 1.0, 1e-12) << "k3 = " << k3;
     EXPECT_NEAR(term.energy(s) / U_exact, 1.0, 1e-12);
@@ -61,13 +61,13 @@ TEST(Twist, TorqueBalanceWithRotatedEnds) {
   const double l = 0.5e-3;
   const int N = 20;
   const double Phi = 2.5;  // [rad]
-  RodState s = testing::straight_rod(N + 1, l, Vec3::UnitZ(), true);
+  State s = testing::straight_rod(N + 1, l, Vec3::UnitZ(), true);
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   for (int j = 1; j + 1 < N; ++j) s.theta[j] = u(rng);
   s.theta[N - 1] = Phi;
   TwistTerm term(mat.GJ());
-  RodForces f = forces_of(term, s);
+  Forces f = forces_of(term, s);
   double tsum = 0, tmax = 0;
   for (double t : f.torque) {
     tsum += t;
@@ -85,11 +85,11 @@ TEST(Twist, TorqueBalanceWithRotatedEnds) {
 
 // A helix-shaped rod with frames carried in time from the straight state (nonzero reference
 // twist) and random material angles.
-RodState twisted_helix(unsigned seed) {
+State twisted_helix(unsigned seed) {
   const double l = 0.5e-3;
   const int n = 16;
   const Vec3List helix = testing::helix_points(2.0 * l, 0.5 * l, 0.45, n);
-  RodState s = testing::straight_rod(n, l, Vec3::UnitZ(), true);
+  State s = testing::straight_rod(n, l, Vec3::UnitZ(), true);
   // Morph the straight rod into the helix, transporting the reference frames in time.
   Vec3List straight = s.x;
   for (int k = 1; k <= 40; ++k) {
@@ -106,7 +106,7 @@ RodState twisted_helix(unsigned seed) {
   return s;
 }
 
-double max_abs_ref_twist(const RodState& s) {
+double max_abs_ref_twist(const State& s) {
   double m = 0;
   for (double t : s.ref_twist) m = std::max(m, std::abs(t));
   return m;
@@ -122,14 +122,14 @@ TEST(Twist, EnergyInvariantUnderRigidRotation) {
   const auto mat = testing::default_material();
   TwistTerm term(mat.GJ());
   for (unsigned seed = 1; seed <= 3; ++seed) {
-    const RodState s0 = twisted_helix(seed);
+    const State s0 = twisted_helix(seed);
     const double U0 = term.energy(s0);
     ASSERT_GT(U0, 0.0);
     for (double angle : {0.3, 1.3, 2.5}) {
       const Eigen::Matrix3d R =
           Eigen::AngleAxisd(angle, Vec3(1.0, 1.0, 0.5 * seed).normalized()).toRotationMatrix();
       // (a) Frames rotated rigidly with the rod, theta unchanged.
-      RodState a = s0;
+      State a = s0;
       for (auto& p : a.x) p = R * p;
       for (auto& d : a.ref1) d = R * d;
       for (auto& t : a.ref_tangent) t = R * t;
@@ -137,7 +137,7 @@ TEST(Twist, EnergyInvariantUnderRigidRotation) {
 
       // (b) Positions rotated, frames re-transported from the old tangents, theta adjusted so
       // that the material frame is the rotated one.
-      RodState b = s0;
+      State b = s0;
       for (auto& p : b.x) p = R * p;
       update_reference_frames(b);
       for (int j = 0; j < b.num_edges(); ++j) {
@@ -164,10 +164,10 @@ TEST(Twist, ForcesAndTorquesBalanceMoments) {
   const auto mat = testing::default_material();
   TwistTerm term(mat.GJ());
   for (unsigned seed = 1; seed <= 3; ++seed) {
-    RodState s = twisted_helix(seed);
+    State s = twisted_helix(seed);
     for (auto& p : s.x) p += Vec3(1e-3, -2e-3, 0.5e-3);  // off-origin, so the moment is nontrivial
     update_reference_frames(s);
-    const RodForces f = forces_of(term, s);
+    const Forces f = forces_of(term, s);
     double fmax = 0, lever = 0;
     for (int i = 0; i < s.num_nodes(); ++i) {
       fmax = std::max(fmax, f.f[i].norm());
@@ -187,7 +187,7 @@ TEST(Twist, ForcesAndTorquesBalanceMoments) {
 TEST(Twist, GradientMatchesFiniteDifferencesOnHelix) {
   const auto mat = testing::default_material();
   for (unsigned seed = 1; seed <= 3; ++seed) {
-    const RodState s = twisted_helix(seed);
+    const State s = twisted_helix(seed);
     const double rt = max_abs_ref_twist(s);
     std::printf("  helix seed %u: max |reference twist| = %.3f rad\n", seed, rt);
     ASSERT_GT(rt, 0.01);

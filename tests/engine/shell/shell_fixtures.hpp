@@ -3,8 +3,8 @@
 // states, a straight wire over a mesh.
 #include <random>
 
-#include "engine/rod/rod_state.hpp"
 #include "engine/shell/shell_term.hpp"
+#include "engine/state.hpp"
 
 namespace wirepack::testing {
 
@@ -27,8 +27,8 @@ inline Vec3List perturbed(const Vec3List& x, double amplitude, unsigned seed) {
 }
 
 // A straight wire of n nodes from a to b (all dynamic, at rest) over a shell mesh at rest.
-inline RodState wire_over(const ShellMesh& mesh, const Vec3& a, const Vec3& b, int n) {
-  RodState s;
+inline State wire_over(const ShellMesh& mesh, const Vec3& a, const Vec3& b, int n) {
+  State s;
   for (int i = 0; i < n; ++i) s.x.push_back(a + (b - a) * (double(i) / (n - 1)));
   s.v.assign(n, Vec3::Zero());
   for (int j = 0; j + 1 < n; ++j) s.rest_length.push_back((s.x[j + 1] - s.x[j]).norm());

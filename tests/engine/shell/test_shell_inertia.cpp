@@ -22,7 +22,7 @@ SceneParams shell_scene(double rho, double xi, double eps, double c) {
   p.xi = xi;
   p.eps = eps;
   p.numerics.shell_mesh_size = 4 * p.wire.radius;  // a coarse mesh: the rule is per area
-  p.numerics.shell_inertia_thickness = c;
+  p.numerics.shell_inertia_factor = c;
   return p;
 }
 
@@ -41,7 +41,7 @@ TEST(ShellInertia, ThinShellVertexMassesMatchTheClosedForm) {
   const Assembly thin = assemble(shell_scene(rho, xi, eps, c));
   const SceneParams p = shell_scene(rho, xi, eps, c);
   const double r = p.wire.radius, R = p.R(), t = R / xi;
-  EXPECT_DOUBLE_EQ(shell_inertia_thickness(p), c * r);
+  EXPECT_DOUBLE_EQ(shell_mass_thickness(p), c * r);
   const double q = p.numerics.quasistatic_ratio, v = p.injection_speed;
   const double rho_s = p.wire.youngs_modulus / eps * q * q / (v * v);
   // Mesh area from the faces, independently of the assembly's loop.
