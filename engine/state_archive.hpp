@@ -32,9 +32,10 @@ class CheckpointError : public std::runtime_error {
 class StateWriter {
  public:
   static constexpr bool kLoading = false;
-  template <class T>
-  void operator()(const T& v) {
-    put(v);
+  // Each value in turn, left to right.
+  template <class... T>
+  void operator()(const T&... v) {
+    (put(v), ...);
   }
   template <class V>
   void count(const V& v, std::uint64_t /*limit*/) {
@@ -87,9 +88,9 @@ class StateReader {
  public:
   static constexpr bool kLoading = true;
   explicit StateReader(std::string_view bytes) : buf_(bytes) {}
-  template <class T>
-  void operator()(T& v) {
-    get(v);
+  template <class... T>
+  void operator()(T&... v) {
+    (get(v), ...);
   }
   template <class V>
   void count(V& v, std::uint64_t limit) {

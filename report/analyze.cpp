@@ -49,20 +49,30 @@ void prepare_out(const fs::path& out) {
     throw InputError(out.string() + ": cannot create a writable output directory");
 }
 
-}  // namespace
-
-AnalyzeResult analyze_sweep(const AnalyzeOptions& o) {
-  AnalyzeResult result;
+// The runs of o.dir read under the settings (the defaults, the sweep file's, o's flags) and
+// grouped into points; `manifest`: the manifest read ("" when none). (The points hold pointers
+// into a.runs, whose buffer a move keeps.)
+Analysis read_and_group(const AnalyzeOptions& o, std::string& manifest) {
   Analysis a;
   a.settings = default_analysis_settings();
   Directory d = open_directory(o.dir, a.settings);
   apply_flags(o, a.settings);
   check_named_series(o.series);
   a.kept = kept_series(o.series);
-  if (!d.manifest.empty()) result.settings_source = d.manifest;
+  manifest = d.manifest;
   read_runs(o.dir, d, a.settings, a.kept);
   a.runs = std::move(d.runs);
   group(a, d.sweep);
+  return a;
+}
+
+}  // namespace
+
+AnalyzeResult analyze_sweep(const AnalyzeOptions& o) {
+  AnalyzeResult result;
+  std::string manifest;
+  Analysis a = read_and_group(o, manifest);
+  if (!manifest.empty()) result.settings_source = manifest;
 
   const fs::path out = o.out.empty() ? fs::path(o.dir) / "analysis" : fs::path(o.out);
   prepare_out(out);
@@ -160,15 +170,8 @@ AnalyzeResult analyze_sweep(const AnalyzeOptions& o) {
 }
 
 CriticalData read_critical_data(const AnalyzeOptions& o) {
-  Analysis a;
-  a.settings = default_analysis_settings();
-  Directory d = open_directory(o.dir, a.settings);
-  apply_flags(o, a.settings);
-  check_named_series(o.series);
-  a.kept = kept_series(o.series);
-  read_runs(o.dir, d, a.settings, a.kept);
-  a.runs = std::move(d.runs);
-  group(a, d.sweep);
+  std::string manifest;
+  Analysis a = read_and_group(o, manifest);
   CriticalData c;
   c.axes = a.axes;
   c.points = critical_points(a);

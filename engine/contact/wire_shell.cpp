@@ -584,20 +584,9 @@ double WireShellTerm::omega_max_sq(const RodInertia&) const {
 template <class Self, class Archive>
 void WireShellTerm::serialize(Self& t, Archive& ar) {
   ar.tag("WSHL");
-  ar(t.edges_at_build_);
-  ar(t.rebuilds_);
-  ar(t.face_reach_);
-  ar(t.wire_ref_.at_build);
-  ar(t.shell_ref_.at_build);
-  ar(t.candidates_);
-  ar(t.seg_edge_);
-  ar(t.seg_vert_);
-  ar(t.edge_owner_);
-  ar(t.vert_owner_start_);
-  ar(t.vert_owner_);
-  ar(t.cand_slack2_4_);
-  ar(t.edge_slack2_4_);
-  ar(t.vert_slack2_4_);
+  ar(t.edges_at_build_, t.rebuilds_, t.face_reach_, t.wire_ref_.at_build, t.shell_ref_.at_build);
+  ar(t.candidates_, t.seg_edge_, t.seg_vert_, t.edge_owner_, t.vert_owner_start_, t.vert_owner_);
+  ar(t.cand_slack2_4_, t.edge_slack2_4_, t.vert_slack2_4_);
   if (!t.shell_ref_.at_build.empty() &&
       t.shell_ref_.at_build.size() != static_cast<std::size_t>(t.mesh_.num_vertices()))
     ar.fail("wire-shell contact of another mesh");

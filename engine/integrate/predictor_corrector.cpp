@@ -139,12 +139,7 @@ double PredictorCorrector::step(State& s, const EvaluateFn& eval, const Position
 template <class Self, class Archive>
 void PredictorCorrector::serialize(Self& pc, Archive& ar) {
   ar.tag("INTG");
-  ar(pc.dt_);
-  ar(pc.dt_stable_);
-  ar(pc.rejected_);
-  ar(pc.a_);
-  ar(pc.alpha_);
-  ar(pc.sa_);
+  ar(pc.dt_, pc.dt_stable_, pc.rejected_, pc.a_, pc.alpha_, pc.sa_);
 }
 
 void PredictorCorrector::save(StateWriter& out) const {

@@ -21,33 +21,18 @@ constexpr std::size_t kMagicSize = sizeof(kMagic) - 1;
 // const RunCheckpoint.
 template <class C, class Archive>
 void serialize(C& c, Archive& ar) {
-  ar(c.config);
-  ar(c.record.version);
-  ar(c.record.git);
-  ar(c.record.started);
-  ar(c.wall_s);
-  ar(c.next_row);
-  ar(c.next_snapshot);
-  ar(c.last_row_l);
-  ar(c.last_snapshot_l);
+  ar(c.config, c.record.version, c.record.git, c.record.started, c.wall_s);
+  ar(c.next_row, c.next_snapshot, c.last_row_l, c.last_snapshot_l);
   ar.tag("SERI");
   ar.count(c.record.series, 10000);
   for (auto& s : c.record.series) {
-    ar(s.name);
-    ar(s.values);
+    ar(s.name, s.values);
   }
   ar.count(c.record.snapshots, 1000000);
   for (auto& s : c.record.snapshots) {
     ar.tag("SNAP");
-    ar(s.l);
-    ar(s.wire);
-    ar(s.curvature);
-    ar(s.shell_vertices);
-    ar(s.shell_triangles);
-    ar(s.wire_contacts);
-    ar(s.shell_area_stretch);
-    ar(s.shell_contact_force);
-    ar(s.shell_clamped);
+    ar(s.l, s.wire, s.curvature, s.shell_vertices, s.shell_triangles, s.wire_contacts);
+    ar(s.shell_area_stretch, s.shell_contact_force, s.shell_clamped);
   }
   ar.tag("ENGN");
   ar(c.engine);

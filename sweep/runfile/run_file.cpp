@@ -93,11 +93,8 @@ std::mutex& hdf5_mutex() {
 
 namespace {
 
-using h5::check;
-using h5::fail;
-using h5::Handle;
-using h5::Hdf5Lock;
-using h5::utf8_string_type;
+// The HDF5 wrapper (hdf5_handle.hpp): check, fail, Handle, Hdf5Lock, utf8_string_type.
+using namespace h5;
 
 Handle ordered_group_plist() {
   Handle p(H5Pcreate(H5P_GROUP_CREATE), H5Pclose, "create group property list");

@@ -11,11 +11,8 @@ namespace wirepack::sweep {
 
 namespace {
 
-using h5::check;
-using h5::fail;
-using h5::Handle;
-using h5::Hdf5Lock;
-using h5::utf8_string_type;
+// The HDF5 wrapper (hdf5_handle.hpp): check, fail, Handle, Hdf5Lock, utf8_string_type.
+using namespace h5;
 
 bool has_attr(hid_t loc, const std::string& name) {
   const htri_t e = H5Aexists(loc, name.c_str());
