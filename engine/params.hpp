@@ -24,6 +24,9 @@ enum class FeederSpin { Held, Free };
 // proportional damping, C = gamma M_physical: the injected wire sliding along itself is
 // dragged too), the same dashpots beside it.
 enum class DampingForm { Relative, Absolute };
+// The shell membrane's constitutive law: the paper's linear (St. Venant-Kirchhoff) one, or a
+// compressible neo-Hookean one equal to it at small strain (engine/shell/membrane.hpp).
+enum class ShellMaterialLaw { Linear, NeoHookean };
 
 struct WireParams {
   double radius = 0.5e-3;            // r [m]
@@ -58,6 +61,7 @@ struct SceneParams {
   double l_max = 50.0;     // final injected length / R
   std::uint64_t seed = 1;  // seeds the initial transverse perturbation
   ShellKind shell = ShellKind::Elastic;
+  ShellMaterialLaw shell_material = ShellMaterialLaw::Linear;
   double injection_speed = 0.5;  // v [m/s]
   FeederSpin feeder_spin = FeederSpin::Held;
   // k_t / k_n of a sticking contact; 0: Mindlin's 2 (1 - nu_w) / (2 - nu_w) [-].

@@ -116,6 +116,7 @@ Assembly assemble(const SceneParams& p) {
   } else {
     // Elastic shell: mid-surface radius R, thickness t = R / xi, E_s = E_w / eps.
     ShellMaterial& sm = a.shell_material;
+    sm.law = p.shell_material;
     sm.E = w.youngs_modulus / p.eps;
     sm.nu = SceneConstants::kShellPoisson;
     sm.t = R / p.xi;

@@ -18,7 +18,9 @@ double h_quadratic(const Eigen::Matrix2d& abar_inv, const Eigen::Matrix2d& alpha
 }  // namespace
 
 MembraneTerm::MembraneTerm(const ShellMesh& mesh, const ShellMaterial& material)
-    : M_(material.M()), nu_(material.nu) {
+    : M_(material.M()),
+      nu_(material.nu),
+      neo_hookean_(material.law == ShellMaterialLaw::NeoHookean) {
   faces_.reserve(mesh.faces.size());
   std::vector<double> vertex_sum(mesh.rest.size(), 0.0);
   for (const auto& v : mesh.faces) {
@@ -90,6 +92,10 @@ double MembraneTerm::evaluate(const Vec3List& x, Vec3List* f) {
     alpha << a11 - face.abar(0, 0), a12 - face.abar(0, 1), a12 - face.abar(1, 0),
         a22 - face.abar(1, 1);
     alpha *= 0.5;
+    if (neo_hookean_) {
+      face_energy_[k] = neo_hookean_face<kForces>(k, e1, e2, a11, a12, a22, max_stretch_sq);
+      continue;
+    }
     const Eigen::Matrix2d A = face.abar_inv * alpha;  // mixed strain A^i_j [-]
     const double tr = A.trace();
     face_energy_[k] = 0.5 * M_ * face.area * (nu_ * tr * tr + (1.0 - nu_) * (A * A).trace());
@@ -124,6 +130,42 @@ double MembraneTerm::evaluate(const Vec3List& x, Vec3List* f) {
   return ordered_sum(face_energy_);
 }
 
+template <bool kForces>
+double MembraneTerm::neo_hookean_face(int k, const Vec3& e1, const Vec3& e2, double a11, double a12,
+                                      double a22, double& max_stretch_sq) {
+  const Face& face = faces_[k];
+  const Eigen::Matrix2d& bi = face.abar_inv;
+  const double mu = 0.5 * M_ * (1.0 - nu_), lambda = M_ * nu_;  // 2-D Lame moduli [N/m]
+  const double det_a = a11 * a22 - a12 * a12;                   // [m^4]
+  const double det_c = det_a * bi.determinant();                // det C = J^2 [-]
+  const double tr_c = bi(0, 0) * a11 + 2.0 * bi(0, 1) * a12 + bi(1, 1) * a22;
+  const double ln_det = std::log(det_c);  // NaN for a collapsed or inverted face
+  const double energy =
+      face.area * (0.5 * mu * (tr_c - 2.0 - ln_det) + 0.125 * lambda * ln_det * ln_det);
+  if constexpr (kForces) {
+    // S^{ij} = dU/d alpha_ij = 2 dU/da_ij = Abar [mu (abar^{ij} - a^{ij}) + lambda/2 ln det C
+    // a^{ij}] (d tr C / da_ij = abar^{ij}, d ln det C / da_ij = a^{ij}); dU/de_i = S^{ij} e_j.
+    Eigen::Matrix2d a_inv;
+    a_inv << a22, -a12, -a12, a11;
+    a_inv /= det_a;
+    const Eigen::Matrix2d S = face.area * (mu * (bi - a_inv) + 0.5 * lambda * ln_det * a_inv);
+    const Vec3 g1 = S(0, 0) * e1 + S(0, 1) * e2;
+    const Vec3 g2 = S(1, 0) * e1 + S(1, 1) * e2;
+    face_force_[3 * k] = g1 + g2;
+    face_force_[3 * k + 1] = -g1;
+    face_force_[3 * k + 2] = -g2;
+    // Principal stretches squared: the eigenvalues of C, t +- sqrt(t^2 - det C).
+    const double t = 0.5 * tr_c;
+    const double root = std::sqrt(std::max(0.0, t * t - det_c));
+    max_stretch_sq = std::max(max_stretch_sq, t + root);
+    const double min_sq = det_c / (t + root);  // the smaller eigenvalue, without cancellation
+    const double s =
+        std::max(1.0, (1.0 + nu_ - std::min(0.0, std::log(min_sq))) / ((1.0 + nu_) * min_sq));
+    face_load_[3 * k] = face_load_[3 * k + 1] = face_load_[3 * k + 2] = s * face_lambda_[k];
+  }
+  return energy;
+}
+
 double MembraneTerm::accumulate(const Vec3List& x, Vec3List& f) {
   return evaluate<true>(x, &f);
 }
@@ -133,6 +175,8 @@ double MembraneTerm::energy(const Vec3List& x) {
 }
 
 double MembraneTerm::omega_max_sq(double vertex_mass) const {
+  // Neo-Hookean: the per-vertex loads carry each face's own factor (header).
+  if (neo_hookean_) return max_vertex_load_ / vertex_mass;
   // Rest bound, scaled by the StVK tangent stiffness ratio at stretch lambda:
   // d^2/d lambda^2 of (lambda^2 - 1)^2 / 8 is (3 lambda^2 - 1) / 2 (1 at rest).
   const double s = std::max(1.0, 0.5 * (3.0 * max_stretch_sq_ - 1.0));

@@ -4,6 +4,12 @@
 // components of each face's edge basis e_1 = x_1 - x_0, e_2 = x_2 - x_0:
 //   U_m = sum_f 1/2 Abar_f M H^{ijkl} alpha_ij alpha_kl
 //       = sum_f M/2 Abar_f [nu tr(A)^2 + (1 - nu) tr(A^2)],   A = abar^{-1} alpha (2 x 2).
+// With ShellMaterialLaw::NeoHookean (beyond the paper, its open question of material
+// nonlinearity), a compressible neo-Hookean membrane in C = abar^{-1} a = I + 2 A (2 x 2):
+//   U_m = sum_f Abar_f [mu/2 (tr C - 2 - ln det C) + lambda/8 (ln det C)^2],
+// mu = M (1 - nu) / 2 and lambda = M nu the 2-D Lame moduli of the linear law, so that the two
+// agree to second order in the strain; it softens in tension (a sphere inflated by a pressure
+// has a limit point) and stiffens without bound as a face collapses (ln det C -> -inf).
 #include <array>
 #include <string>
 #include <vector>
@@ -24,7 +30,10 @@ class MembraneTerm : public ShellTerm {
   double energy(const Vec3List& x) override;
   // omega_max^2 <= s * max_v sum_{f at v} lambda_f / m (see rest_stiffness_bound) with the
   // stretch factor s = max(1, (3 lambda^2 - 1) / 2) of the largest principal stretch lambda
-  // seen at the last accumulate() (StVK stiffens in tension; at rest s = 1). Against the
+  // seen at the last accumulate() (StVK stiffens in tension; at rest s = 1). Neo-Hookean:
+  // s = max(1, (1 + nu - 2 ln lambda_min) / ((1 + nu) lambda_min^2)) of the smallest principal
+  // stretch, its principal-stretch Hessian over the rest one's largest eigenvalue M (1 + nu)
+  // (it softens in tension and stiffens in compression). Against the
   // largest eigenvalue of the FD stiffness (test_membrane): 1.6x at rest and at 10 %
   // dilation, 2.4x at random +-20 % strains.
   // Per vertex (Engine V): omega_max^2 <= max_v sum_{f at v} s_f lambda_f / m with each face's
@@ -49,9 +58,15 @@ class MembraneTerm : public ShellTerm {
   };
   template <bool kForces>
   double evaluate(const Vec3List& x, Vec3List* f);
+  // The neo-Hookean energy of face k with edges e1, e2 and metric a11, a12, a22 [J]; with
+  // kForces its slot forces and load, and its largest squared stretch into max_stretch_sq.
+  template <bool kForces>
+  double neo_hookean_face(int k, const Vec3& e1, const Vec3& e2, double a11, double a12, double a22,
+                          double& max_stretch_sq);
 
   std::vector<Face> faces_;
   double M_, nu_;                // membrane rigidity [N/m], Poisson ratio [-]
+  bool neo_hookean_;             // ShellMaterialLaw::NeoHookean
   double rest_bound_ = 0.0;      // [N/m]
   double max_stretch_sq_ = 1.0;  // [-]
   // Parallel assembly (threads over faces, bitwise the serial sums): slot j of face k is

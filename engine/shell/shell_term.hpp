@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/params.hpp"
 #include "engine/term_type.hpp"
 #include "engine/types.hpp"
 
@@ -29,6 +30,7 @@ struct ShellMesh {
 };
 
 struct ShellMaterial {
+  ShellMaterialLaw law = ShellMaterialLaw::Linear;      // the membrane's (membrane.hpp)
   double E = 0;                                         // Young's modulus E_s [Pa]
   double nu = 0;                                        // Poisson ratio nu_s [-]
   double t = 0;                                         // thickness [m]

@@ -87,6 +87,26 @@ const std::vector<KeySpec>& scene_schema() {
            [](Scene& s, const json& v) {
              s.engine.shell = v == "rigid" ? ShellKind::Rigid : ShellKind::Elastic;
            }},
+      {.pointer = "/shell_material",
+       .type = Type::Choice,
+       .need = Need::Optional,
+       .fallback = "linear",
+       .choices = {"linear", "neo_hookean"},
+       .roles = {.physical = true},
+       .resolved_where =
+           [](const Scene& s, bool) {
+             return s.engine.shell == ShellKind::Elastic &&
+                    s.engine.shell_material != ShellMaterialLaw::Linear;
+           },
+       .when_absent = "linear",
+       .doc = "the elastic shell membrane's law: linear (the paper's, St. Venant-Kirchhoff) or "
+              "neo_hookean (compressible, equal to it at small strain, softer in tension and "
+              "stiffening without bound in compression) (resolved where neo_hookean)",
+       .apply =
+           [](Scene& s, const json& v) {
+             s.engine.shell_material =
+                 v == "neo_hookean" ? ShellMaterialLaw::NeoHookean : ShellMaterialLaw::Linear;
+           }},
       {.pointer = "/injection_speed",
        .type = Type::Number,
        .need = Need::Optional,

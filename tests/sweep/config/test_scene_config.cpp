@@ -514,5 +514,24 @@ TEST(SceneConfig, ParameterRolesComeFromTheSchema) {
   for (const auto& [ptr, v] : absent) EXPECT_NE(find_key(ptr)->resolved_where, nullptr) << ptr;
 }
 
+// shell_material (issue 51): neo_hookean reaches the engine and enters the resolved scene (so
+// the run's id); "linear", the default, and any value on a rigid sphere leave the id as it was.
+TEST(SceneConfig, ShellMaterialResolvedWhereNeoHookean) {
+  json j = minimal_elastic();
+  const json plain = parse_scene(j, "s.json").resolved;
+  j["shell_material"] = "linear";
+  EXPECT_EQ(parse_scene(j, "s.json").resolved, plain);
+  j["shell_material"] = "neo_hookean";
+  const Scene s = parse_scene(j, "s.json");
+  EXPECT_EQ(s.engine.shell_material, ShellMaterialLaw::NeoHookean);
+  EXPECT_EQ(s.resolved["shell_material"], "neo_hookean");
+  EXPECT_EQ(parse_scene(s.resolved, "resolved").resolved, s.resolved);  // idempotent
+  json rigid = minimal_rigid();
+  rigid["shell_material"] = "neo_hookean";
+  EXPECT_FALSE(parse_scene(rigid, "s.json").resolved.contains("shell_material"));
+  j["shell_material"] = "mooney";
+  EXPECT_THROW(parse_scene(j, "s.json"), InputError);
+}
+
 }  // namespace
 }  // namespace wirepack::sweep
