@@ -251,6 +251,22 @@ int cmd_analyze(const AnalyzeOptions& opt) {
   return kOk;
 }
 
+// Issue 51: the critical points of several sweep directories in one four-dimensional table.
+int cmd_phase_diagram(const std::vector<std::string>& dirs, const AnalyzeOptions& opt) {
+  const AnalyzeResult r = analyze_phase_diagram(dirs, opt);
+  std::cerr << "analyze: " << dirs.size() << " sweep directories, " << r.points << " grid points\n";
+  if (!r.plot_notice.empty()) std::cerr << "  " << r.plot_notice << '\n';
+  std::cout << "CSV:   " << r.csv.front() << '\n';
+  if (!r.plots.empty())
+    std::cout << "plots: " << (fs::path(r.out) / "plots").string() << "/ (" << r.plots.size()
+              << " PNG)\n";
+  else if (!r.scripts.empty())
+    std::cout << "plots: none; " << r.plot_notice << '\n';
+  else
+    std::cout << "plots: none (no transition parameter has two fitted critical points)\n";
+  return kOk;
+}
+
 // Issue 16: rounds of new grid values at the transition, run into DIR. Exit 0, 1 when runs of
 // the sweep failed, 2 on bad input (nothing written).
 int cmd_refine(const RefineOptions& o) {
@@ -394,9 +410,14 @@ int main(int argc, char** argv) {
       "analyze",
       "tables (CSV) and plots of a sweep directory: D curves, scaling exponents, seed-averaged "
       "series, curvature and loop-length distributions (docs/reference.md, \"Analysis\")");
-  analyze->add_option("dir", analyze_opt.dir, "sweep directory (written by wirepack sweep)")
+  std::vector<std::string> analyze_dirs;
+  analyze
+      ->add_option("dir", analyze_dirs,
+                   "sweep directory (written by wirepack sweep); several: their critical points "
+                   "in one four-dimensional table, OUT/phase_diagram_4d.csv, and its plots")
       ->required();
-  analyze->add_option("-o,--out", analyze_opt.out, "output directory (default DIR/analysis)");
+  analyze->add_option("-o,--out", analyze_opt.out,
+                      "output directory (default DIR/analysis; required with several DIRs)");
   auto* d_window_opt = analyze->add_option(
       "--d-window", d_window, "L_MIN,L_MAX: l window of D's maximum and mean (default 5,50)");
   analyze
@@ -560,6 +581,8 @@ int main(int argc, char** argv) {
       if (*bins_opt) analyze_opt.bins = bins;
       if (*resamples_opt) analyze_opt.resamples = resamples;
       if (no_plots) analyze_opt.gnuplot.clear();
+      if (analyze_dirs.size() > 1) return cmd_phase_diagram(analyze_dirs, analyze_opt);
+      analyze_opt.dir = analyze_dirs.front();
       return cmd_analyze(analyze_opt);
     }
     if (*refine) {

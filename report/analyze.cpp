@@ -7,6 +7,7 @@
 
 #include "report/critical_table.hpp"
 #include "report/csv_table.hpp"
+#include "report/phase_4d.hpp"
 #include "report/plot_jobs.hpp"
 #include "report/plots.hpp"
 #include "report/reductions.hpp"
@@ -177,6 +178,47 @@ CriticalData read_critical_data(const AnalyzeOptions& o) {
   c.points = critical_points(a);
   c.settings = a.settings;
   return c;
+}
+
+AnalyzeResult analyze_phase_diagram(const std::vector<std::string>& dirs, const AnalyzeOptions& o) {
+  if (o.out.empty())
+    throw InputError(
+        "analyze: with several sweep directories, --out must name the output directory");
+  std::vector<PhaseSource> sources;
+  AnalyzeResult result;
+  for (const auto& dir : dirs) {
+    AnalyzeOptions one = o;
+    one.dir = dir;
+    CriticalData c = read_critical_data(one);
+    result.points += c.points.size();
+    sources.push_back({dir, c.settings.order_parameter, c.axes, std::move(c.points),
+                       c.settings.bootstrap_resamples, c.settings.critical_ranges});
+  }
+  const fs::path out(o.out);
+  prepare_out(out);
+  result.out = out.string();
+  const auto rows = phase_rows(sources);
+  const std::string csv = (out / "phase_diagram_4d.csv").string();
+  write_file_atomic(csv, phase_4d_csv(rows));
+  result.csv.push_back(csv);
+  const std::string gnuplot = plots::find_program(o.gnuplot);
+  std::vector<std::string> failures;
+  for (const auto& [name, script] : phase_4d_plots(rows)) {
+    const std::string gp = (out / "plots" / (name + ".gp")).string();
+    const std::string png = (out / "plots" / (name + ".png")).string();
+    write_file_atomic(gp, script);
+    result.scripts.push_back(gp);
+    if (gnuplot.empty()) continue;
+    if (const std::string err = plots::render(gnuplot, gp, png); err.empty())
+      result.plots.push_back(png);
+    else
+      failures.push_back(name + ": " + err);
+  }
+  if (gnuplot.empty() && !result.scripts.empty())
+    result.plot_notice = "gnuplot not found: scripts written, no PNGs";
+  else if (!failures.empty())
+    result.plot_notice = failures.front();
+  return result;
 }
 
 }  // namespace wirepack::report

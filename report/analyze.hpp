@@ -66,6 +66,13 @@ struct AnalyzeResult {
 // rule, or OUT cannot be created; nothing is written then.
 AnalyzeResult analyze_sweep(const AnalyzeOptions& options);
 
+// `wirepack analyze DIR DIR ... --out OUT`: the critical points of every sweep directory (each
+// read as by analyze_sweep, under its own settings) in one four-dimensional table,
+// OUT/phase_diagram_4d.csv, with OUT/plots/phase4d_<parameter>.gp and .png (phase_4d.hpp).
+// InputError (exit 2) as analyze_sweep, or when OUT is empty; nothing is written then.
+AnalyzeResult analyze_phase_diagram(const std::vector<std::string>& dirs,
+                                    const AnalyzeOptions& options);
+
 // The per-point D of DIR for the critical-point fits (`wirepack refine`): DIR read as by
 // analyze_sweep (same settings and errors), nothing written.
 struct CriticalData {

@@ -413,6 +413,9 @@ std::vector<CriticalPoint> critical_points(const Analysis& a) {
   for (const auto& p : a.points) {
     CriticalPoint c;
     for (const auto& ptr : a.axes) c.params[ptr] = leaf(p, ptr);
+    // Every transition parameter, swept or not (the four-dimensional table, phase_4d.hpp).
+    for (const auto& ptr : sweep::keys_with(&sweep::KeySpec::Roles::transition))
+      c.params.emplace(ptr, leaf(p, ptr));
     c.D = values(p, order_parameter_field(a.settings.order_parameter));
     c.failed = p.failed;
     c.missing = p.missing;

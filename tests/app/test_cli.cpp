@@ -205,6 +205,27 @@ TEST(Cli, ShortRunAndExport) {
 // Twin runs end to end: the same seed twice gives one trajectory (never parts, separation 0);
 // a run and its twin with perturbation/offset 1e-6 compare snapshot by snapshot; a file that is
 // no run file is bad input and writes nothing.
+// Several sweep directories: their critical points in one four-dimensional table (issue 51),
+// here the committed golden sweep (rho = 10, rigid: xi and eps blank) read twice; without
+// --out it is bad input and nothing is written.
+TEST(Cli, AnalyzeSeveralDirectoriesWritesTheFourDimensionalTable) {
+  TempDir dir;
+  const std::string golden = WIREPACK_SOURCE_DIR "/tests/golden/sweep";
+  const Result r = wirepack(dir, "analyze " + golden + " " + golden + " --out p4d --no-plots");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string csv = read_text(dir / "p4d/phase_diagram_4d.csv");
+  EXPECT_EQ(csv.rfind("source,order_parameter,axis,rho,xi,eps,mu_s,other,status,", 0), 0u) << csv;
+  std::size_t rows = 0, at = 0;
+  while ((at = csv.find(golden + ",D,mu_s,10,,,,numerics.tolerance=", at)) != std::string::npos) {
+    ++rows;
+    ++at;
+  }
+  EXPECT_EQ(rows, 4u) << csv;  // two tolerance slices of mu_s, twice
+  const Result no_out = wirepack(dir, "analyze " + golden + " " + golden);
+  EXPECT_EQ(no_out.code, 2);
+  EXPECT_NE(no_out.err.find("--out"), std::string::npos) << no_out.err;
+}
+
 TEST(Cli, TwinComparesTwoRunsModuloTheFeedAxisRotation) {
   TempDir dir;
   const std::string scene = R"({"rho": 10, "mu_s": 0.5, "shell": "rigid", "l_max": 1.5,
