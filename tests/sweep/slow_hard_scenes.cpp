@@ -1,10 +1,10 @@
 // Hard-scene suite (issue 19, part 1; label "slow"): the 16 corners of rho in {10, 40},
 // xi in {10, 200}, eps in {1, 1e4}, mu_s in {0, 1.5}, the head-on tip into the stiffest shell,
 // the densest long runs (rho = 10, rigid and elastic), the coarsest and finest numerics presets
-// at one corner, and Engine VI's absolute damping and inertial preset at three of them. Each scene
-// runs to an l_max chosen to take well under a minute of CPU on the 2-core development machine
-// (docs/reference.md "Hard scenes"; the table of one measured run is in docs/measurements.md
-// "Hard scenes"). What each scene must show:
+// at one corner, Engine VI's absolute damping and inertial preset and the neo-Hookean shell at
+// three of them. Each scene runs to an l_max chosen to take well under a minute of CPU on the
+// 2-core development machine (docs/reference.md "Hard scenes"; the table of one measured run is
+// in docs/measurements.md "Hard scenes"). What each scene must show:
 //   - it ends, within its budget of CPU time: complete, or failed with a reason; the only
 //     failures accepted are the ones that say "this run cannot continue" (the step collapsed,
 //     the packing jams the feed, or the budget was spent), never NaN/Inf or a wire through the
@@ -299,6 +299,17 @@ std::vector<HardScene> hard_scenes() {
       j["numerics"] = numerics;
       s.push_back({variant + "_" + corner, j});
     }
+  }
+  // The neo-Hookean shell (shell_material, issue 51) at the same three: it stiffens without
+  // bound where a face collapses, the thin soft shell is the most strained, the head-on tip
+  // presses the stiffest shell hardest.
+  for (const auto& [corner, j0] :
+       {std::pair{"rho10_xi10_eps1_mu1p5", elastic(10, 10, 1, 1.5, 12)},
+        std::pair{"rho10_xi200_eps1e4_mu1p5", elastic(10, 200, 1e4, 1.5, 5)},
+        std::pair{"head_on_stiffest_shell", elastic(20, 10, 1, 0, 3)}}) {
+    json j = j0;
+    j["shell_material"] = "neo_hookean";
+    s.push_back({std::string("neo_hookean_") + corner, j});
   }
   // The coarsest and the finest numerics presets at the first corner (whose row above is the
   // default preset): fast to the same l, accurate just past the head-on contact.
