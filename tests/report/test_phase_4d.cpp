@@ -12,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include "report/csv_rows.hpp"
+
 namespace wirepack::report {
 namespace {
 
@@ -48,32 +50,7 @@ std::vector<CriticalPoint> sweep_points(const std::vector<double>& eps_values, d
 }
 
 std::vector<std::map<std::string, std::string>> parse(const std::string& text) {
-  std::istringstream in(text);
-  std::string line;
-  std::getline(in, line);
-  std::vector<std::string> names;
-  std::stringstream hs(line);
-  for (std::string c; std::getline(hs, c, ',');) names.push_back(c);
-  std::vector<std::map<std::string, std::string>> rows;
-  while (std::getline(in, line)) {
-    std::map<std::string, std::string> row;
-    std::size_t i = 0;
-    bool quoted = false;
-    std::string c;
-    for (char ch : line + ",") {
-      if (ch == '"') {
-        quoted = !quoted;
-      } else if (ch == ',' && !quoted) {
-        row[names.at(i++)] = c;
-        c.clear();
-      } else {
-        c += ch;
-      }
-    }
-    EXPECT_EQ(i, names.size()) << line;
-    rows.push_back(row);
-  }
-  return rows;
+  return testing::csv_rows(text);
 }
 
 std::vector<PhaseSource> sources() {

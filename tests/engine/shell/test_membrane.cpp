@@ -30,12 +30,23 @@ double total_area(const ShellMesh& m) {
   return a;
 }
 
+void check_fd(const ShellMaterial& material);
+
 // Random states with strains up to ~20 % (vertex noise 0.1 edge) and ~60 % (0.3 edge): the
 // relative error falls ~100x per decade of h (central differences, O(h^2)) until round-off
-// (~1e-16 / h) takes over: best < 1e-7 and a >= 30x drop from h = 1e-2 to 1e-3.
+// (~1e-16 / h) takes over: best < 1e-7 and a >= 30x drop from h = 1e-2 to 1e-3. Both laws: the
+// paper's linear one and the neo-Hookean one (test_membrane_neo_hookean.cpp).
 TEST(MembraneFd, GradientMatchesFiniteDifferences) {
+  for (const ShellMaterialLaw law : {ShellMaterialLaw::Linear, ShellMaterialLaw::NeoHookean}) {
+    ShellMaterial material = paper_material();
+    material.law = law;
+    check_fd(material);
+  }
+}
+
+void check_fd(const ShellMaterial& material) {
   const ShellMesh mesh = sphere_with_hole(10e-3, 4e-3, 3e-3, 1e-3);
-  MembraneTerm term(mesh, paper_material());
+  MembraneTerm term(mesh, material);
   const double edge = mesh_quality(mesh).edge_mean;
   for (unsigned seed = 1; seed <= 3; ++seed) {
     for (double amp : {0.1, 0.3}) {
