@@ -401,6 +401,9 @@ int main(int argc, char** argv) {
   sweep->add_option("--checkpoint-every", sweep_args.checkpoint_every, checkpoint_help)
       ->check(CLI::Range(0.0, 1e9));
 
+  // The transition parameters, as the scene schema's rows name them (KeySpec::Roles).
+  const std::string transition_names =
+      wirepack::sweep::key_names_with(&wirepack::sweep::KeySpec::Roles::transition);
   AnalyzeOptions analyze_opt;
   std::string d_window;
   double at_l = -1;
@@ -433,8 +436,9 @@ int main(int argc, char** argv) {
       "--resamples", resamples, "seed-bootstrap resamples of the exponents (default 1000; 0: off)");
   analyze
       ->add_option("--critical-range", analyze_opt.critical_ranges,
-                   "NAME=X_MIN,X_MAX: fit the critical point of NAME (mu_s, eps, xi, rho) on the "
-                   "grid values inside only, e.g. mu_s=0,0.6; repeatable")
+                   "NAME=X_MIN,X_MAX: fit the critical point of NAME (" + transition_names +
+                       ") on the grid values inside only, e.g. mu_s=0,0.6; "
+                       "repeatable")
       ->allow_extra_args(false);
   analyze
       ->add_option("--fit-auto", analyze_opt.fit_auto,
@@ -458,8 +462,8 @@ int main(int argc, char** argv) {
   refine->add_option("dir", refine_opt.dir, "sweep directory (written by wirepack sweep)")
       ->required();
   refine->add_option("--axis", refine_opt.axis,
-                     "the parameter to refine: mu_s, eps, xi or rho (default mu_s if swept, else "
-                     "the one swept)");
+                     "the parameter to refine: one of " + transition_names +
+                         " (default mu_s if swept, else the one swept)");
   refine
       ->add_option("--runs", refine_opt.runs,
                    "new runs per slice and round, in whole points of all seeds (default 4 "
