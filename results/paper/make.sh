@@ -35,7 +35,9 @@
 # of wall time here; commit them too), bitwise as if it had never been interrupted.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
-# PAPER_DIR and WIREPACK let tests/golden/check_paper.sh run `status` on a copy of the campaign.
+# PAPER_DIR and WIREPACK let tests/golden/check_paper.sh run `status` on a copy of the campaign,
+# and PAPER_DIR=results/paper_inertial runs the same campaign under the inertial preset
+# (results/paper_inertial/README.md): a folder with the four figures' sweep files.
 here=${PAPER_DIR:-$root/results/paper}
 wp=${WIREPACK:-$root/build/wirepack}
 figs=(fig5b fig5a fig4 fig1_3)
@@ -89,8 +91,8 @@ status() {
     total_done=$((total_done + done))
     total=$((total + n))
   done
-  echo "all: $total_done of $total runs done; results/paper holds $(megabytes "$here" README.md)" \
-    "besides its README (budget 150 MB)"
+  echo "all: $total_done of $total runs done; results/$(basename "$here") holds" \
+    "$(megabytes "$here" README.md) besides its README (budget 150 MB)"
   # How far each partial run is: the last l its checkpoint has recorded (wirepack export of a
   # checkpoint writes the series so far).
   local csv
