@@ -5,7 +5,8 @@ Usage: summary.py WIREPACK OUT_RUNS.csv OUT_POINTS.csv VARIANT=SWEEP_DIR[@L_MAX[
 
 @L_MAX cuts every series at l = L_MAX (a longer committed sweep read as the protocol's
 baseline; its sense blocks then come from its last snapshot <= L_MAX, blank where it has none),
-@SEEDS and @MUS keep only those seeds and mu_s values (comma-separated).
+@SEEDS and @MUS keep only those seeds and mu_s values (comma-separated). The runs are the
+manifest's and any other finished mu_s-X_sN_ID.h5 in SWEEP_DIR/runs, ordered by mu_s and seed.
 
 Per run (from `wirepack export`): the maximum of D_chord over l in [5, l_end] and the l where
 it sits, D_chord at the end, how far from the end D_chord was last above 0.1 (a coil that
@@ -82,7 +83,18 @@ def main():
             seeds = {int(x) for x in parts[2].split(",")} if len(parts) > 2 else None
             mus = {float(x) for x in parts[3].split(",")} if len(parts) > 3 else None
             manifest = json.load(open(os.path.join(d, "manifest.json")))
-            for run in manifest["runs"]:
+            runs = sorted(manifest["runs"], key=lambda r: (float(r["point"].get("mu_s", -1)),
+                                                           r["seed"]))
+            # Finished runs of the folder that the manifest does not list (a sweep resumed with
+            # another seed range writes its own list): mu_s and seed from the file name.
+            listed = {r["file"] for r in runs}
+            for name in sorted(os.listdir(os.path.join(d, "runs"))):
+                m = re.match(r"mu_s-([^_]+)_s([0-9]+)_[0-9a-f]{12}\.h5$", name)
+                if m and "runs/" + name not in listed:
+                    runs.append({"file": "runs/" + name, "seed": int(m.group(2)),
+                                 "point": {"mu_s": float(m.group(1))}})
+            runs.sort(key=lambda r: (float(r["point"].get("mu_s", -1)), r["seed"]))
+            for run in runs:
                 path = os.path.join(d, run["file"])
                 if not os.path.exists(path) or (seeds and run["seed"] not in seeds):
                     continue
