@@ -139,7 +139,10 @@ void label_scenes(std::vector<Run>& runs) {
         const auto it = m2.find(k);
         if (it == m2.end() || it->second != v) varying.insert(k);
       }
-  if (varying.empty()) varying = {"/shell", "/mu_s"};  // one scene: say which
+  if (varying.empty()) {  // one scene: say which, by the schema's label keys (mu_s, shell)
+    const auto keys = sweep::keys_with(&sweep::KeySpec::Roles::label);
+    varying.insert(keys.begin(), keys.end());
+  }
   for (auto& r : runs) {
     std::string label;
     const auto& m = leaves[r.scene];

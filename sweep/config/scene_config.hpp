@@ -69,6 +69,7 @@ struct KeySpec {
     bool transition = false;    // a control parameter of the transition: critical points, refine
     bool log_scale = false;     // spans decades: its critical points are fitted in log10
     bool refine_first = false;  // refine's axis where several transition parameters are swept
+    bool label = false;         // names a scene in words where nothing else varies (accuracy study)
   };
   Roles roles = {};
   // Keys added after runs existed enter the resolved scene (so a run's id) only where this holds

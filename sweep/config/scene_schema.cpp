@@ -49,7 +49,11 @@ const std::vector<KeySpec>& scene_schema() {
        .type = Type::Number,
        .need = Need::Required,
        .min = Bound{0, true},
-       .roles = {.column = true, .physical = true, .transition = true, .refine_first = true},
+       .roles = {.column = true,
+                 .physical = true,
+                 .transition = true,
+                 .refine_first = true,
+                 .label = true},
        .doc = "static friction coefficient (wire-wire and wire-shell)",
        .apply = [](Scene& s, const json& v) { s.engine.mu_s = num(v); }},
       {.pointer = "/mu_d",
@@ -81,7 +85,7 @@ const std::vector<KeySpec>& scene_schema() {
        .need = Need::Optional,
        .fallback = "elastic",
        .choices = {"elastic", "rigid"},
-       .roles = {.column = true, .physical = true},
+       .roles = {.column = true, .physical = true, .label = true},
        .doc = "elastic shell, or an analytic rigid sphere of radius R",
        .apply =
            [](Scene& s, const json& v) {

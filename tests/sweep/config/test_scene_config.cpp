@@ -501,6 +501,7 @@ TEST(SceneConfig, ParameterRolesComeFromTheSchema) {
                                                                  "/mu_d", "/l_max", "/shell"}));
   EXPECT_EQ(keys_with(&Roles::log_scale), std::vector<std::string>{"/eps"});
   EXPECT_EQ(keys_with(&Roles::refine_first), std::vector<std::string>{"/mu_s"});
+  EXPECT_EQ(keys_with(&Roles::label), (std::vector<std::string>{"/mu_s", "/shell"}));
   EXPECT_EQ(key_names_with(&Roles::transition), "rho, xi, eps, mu_s");
   for (const auto& ptr : keys_with(&Roles::column))
     EXPECT_TRUE(find_key(ptr)->roles.physical) << ptr;  // a column is a physical parameter
