@@ -9,8 +9,9 @@
 # Also rewrites the section between "<!-- curves -->" and "<!-- /curves -->": Fig. 5's curves
 # point by point (seeds, the literal D, D_chord and D_kappa, mean ± SE over the seeds, from
 # FIG/analysis/D_vs_<param>.csv) and each figure's critical point (FIG/analysis/critical.csv).
+# PAPER_DIR: another campaign folder of the same figures (results/paper_inertial).
 set -euo pipefail
-here=$(cd "$(dirname "$0")" && pwd)
+here=${PAPER_DIR:-$(cd "$(dirname "$0")" && pwd)}
 
 # value MU_S NAME FILE: "value stderr" of the row with mu_s = MU_S and column `name` (exponents)
 # or `quantity` (distributions) = NAME; for distributions NAME is quantity:mu or quantity:sigma.
