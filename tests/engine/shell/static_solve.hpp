@@ -7,6 +7,8 @@
 // namespace wirepack::testing like the FD harness.
 //
 // DOF layout: entry 3 i + k is coordinate k of vertex i (nv vertices, 3 nv DOFs).
+#include <Eigen/Dense>
+#include <Eigen/Eigenvalues>
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>
@@ -227,6 +229,24 @@ inline NonlinearResult solve_nonlinear(const std::vector<ShellTerm*>& terms, con
   res.u.resize(x.size());
   for (size_t i = 0; i < x.size(); ++i) res.u[i] = x[i] - mesh.rest[i];
   return res;
+}
+
+// The explicit step's bound of a one-ring term at state x against the truth: after
+// term.accumulate(x), omega_max_sq(1) (a stiffness at unit mass) and the largest eigenvalue of
+// the FD stiffness there [N/m].
+struct StepBound {
+  double lambda_max, bound;
+};
+inline StepBound step_bound(ShellTerm& term, const ShellMesh& mesh, const Vec3List& x) {
+  Vec3List f(x.size(), Vec3::Zero());
+  term.accumulate(x, f);
+  StiffnessOptions opt;
+  opt.stencil_rings = 1;
+  const Eigen::MatrixXd K = Eigen::MatrixXd(fd_stiffness({&term}, mesh, x, opt));
+  const double lmax = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(K, Eigen::EigenvaluesOnly)
+                          .eigenvalues()
+                          .maxCoeff();
+  return {lmax, term.omega_max_sq(1.0)};
 }
 
 }  // namespace wirepack::testing

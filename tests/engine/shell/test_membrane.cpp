@@ -273,8 +273,6 @@ TEST(MembraneStep, OmegaBoundsTheLargestStiffnessEigenvalue) {
   const ShellMaterial mat = paper_material();
   const ShellMesh mesh = sphere_with_hole(10e-3, 4e-3, 3e-3, 1e-3);
   MembraneTerm term(mesh, mat);
-  testing::StiffnessOptions opt;
-  opt.stencil_rings = 1;
   const double edge = mesh_quality(mesh).edge_mean;
   // Rest, 10 % dilation, random state with strains ~ +-20 %, and one vertex pulled out by
   // 0.8 edges (its faces stretched ~50 %, the rest at rest). The per-vertex bound of Engine V
@@ -286,13 +284,7 @@ TEST(MembraneStep, OmegaBoundsTheLargestStiffnessEigenvalue) {
   const int pulled = static_cast<int>(mesh.rest.size()) / 2;
   states[3][pulled] += 0.8 * edge * mesh.rest[pulled].normalized();
   for (size_t k = 0; k < states.size(); ++k) {
-    Vec3List f(mesh.rest.size(), Vec3::Zero());
-    term.accumulate(states[k], f);
-    const Eigen::MatrixXd K = Eigen::MatrixXd(testing::fd_stiffness({&term}, mesh, states[k], opt));
-    const double lmax = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(K, Eigen::EigenvaluesOnly)
-                            .eigenvalues()
-                            .maxCoeff();
-    const double bound = term.omega_max_sq(1.0);  // at unit mass: a stiffness [N/m]
+    const auto [lmax, bound] = testing::step_bound(term, mesh, states[k]);
     std::printf(
         "  state %zu: lambda_max(K) = %.4g N/m, bound %.4g N/m (ratio %.2f), "
         "M = %.4g N/m\n",
