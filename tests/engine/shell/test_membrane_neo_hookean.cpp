@@ -5,7 +5,6 @@
 // beside the linear law's (MembraneFd in test_membrane.cpp).
 #include <gtest/gtest.h>
 
-#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <cstdio>
 
