@@ -56,8 +56,10 @@ megabytes() {
   else
     files=$(cd "$1" && find . -type f | sed 's|^\./||')
   fi
-  (cd "$1" && grep -vx -- "${2:-}" <<< "$files" | tr '\n' '\0' | xargs -0 -r stat -c %s) |
-    awk '{ b += $1 } END { printf "%.1f MB", b / 1e6 }'
+  # (A file git tracks may be gone from the tree: a checkpoint whose run has finished.)
+  (cd "$1" && grep -vx -- "${2:-}" <<< "$files" | while IFS= read -r f; do
+    if [ -f "$f" ]; then stat -c %s "$f"; fi
+  done) | awk '{ b += $1 } END { printf "%.1f MB", b / 1e6 }'
 }
 
 status() {
