@@ -409,13 +409,13 @@ Distribution distribution(const std::string& quantity, const std::vector<double>
 }
 
 std::vector<CriticalPoint> critical_points(const Analysis& a) {
+  // Every transition parameter, swept or not (the four-dimensional table, phase_4d.hpp).
+  const auto transition = sweep::keys_with(&sweep::KeySpec::Roles::transition);
   std::vector<CriticalPoint> out;
   for (const auto& p : a.points) {
     CriticalPoint c;
     for (const auto& ptr : a.axes) c.params[ptr] = leaf(p, ptr);
-    // Every transition parameter, swept or not (the four-dimensional table, phase_4d.hpp).
-    for (const auto& ptr : sweep::keys_with(&sweep::KeySpec::Roles::transition))
-      c.params.emplace(ptr, leaf(p, ptr));
+    for (const auto& ptr : transition) c.params.emplace(ptr, leaf(p, ptr));
     c.D = values(p, order_parameter_field(a.settings.order_parameter));
     c.failed = p.failed;
     c.missing = p.missing;

@@ -88,14 +88,14 @@ double MembraneTerm::evaluate(const Vec3List& x, Vec3List* f) {
     const Vec3 e1 = x[face.v[1]] - x[face.v[0]];
     const Vec3 e2 = x[face.v[2]] - x[face.v[0]];
     const double a11 = e1.dot(e1), a12 = e1.dot(e2), a22 = e2.dot(e2);
+    if (neo_hookean_) {  // works on the metric itself, not the Green strain
+      face_energy_[k] = neo_hookean_face<kForces>(k, e1, e2, a11, a12, a22, max_stretch_sq);
+      continue;
+    }
     Eigen::Matrix2d alpha;  // Green strain alpha_ij = (a_ij - abar_ij) / 2 [m^2]
     alpha << a11 - face.abar(0, 0), a12 - face.abar(0, 1), a12 - face.abar(1, 0),
         a22 - face.abar(1, 1);
     alpha *= 0.5;
-    if (neo_hookean_) {
-      face_energy_[k] = neo_hookean_face<kForces>(k, e1, e2, a11, a12, a22, max_stretch_sq);
-      continue;
-    }
     const Eigen::Matrix2d A = face.abar_inv * alpha;  // mixed strain A^i_j [-]
     const double tr = A.trace();
     face_energy_[k] = 0.5 * M_ * face.area * (nu_ * tr * tr + (1.0 - nu_) * (A * A).trace());
