@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace wirepack {
 namespace {
@@ -82,13 +83,19 @@ template <bool kForces>
 double MembraneTerm::evaluate(const Vec3List& x, Vec3List* f) {
   double max_stretch_sq = 1.0;
   const int nf = static_cast<int>(faces_.size());
-#pragma omp parallel for schedule(static) reduction(max : max_stretch_sq)
+  int collapsed = nf;  // the lowest neo-Hookean face with det C <= 0 (nf: none)
+#pragma omp parallel for schedule(static) reduction(max : max_stretch_sq) reduction(min : collapsed)
   for (int k = 0; k < nf; ++k) {
     const Face& face = faces_[k];
     const Vec3 e1 = x[face.v[1]] - x[face.v[0]];
     const Vec3 e2 = x[face.v[2]] - x[face.v[0]];
     const double a11 = e1.dot(e1), a12 = e1.dot(e2), a22 = e2.dot(e2);
     if (neo_hookean_) {  // works on the metric itself, not the Green strain
+      // ln det C has no value on a collapsed or inverted face (the law's energy is infinite).
+      if (!((a11 * a22 - a12 * a12) * face.abar_inv.determinant() > 0.0)) {
+        collapsed = std::min(collapsed, k);
+        continue;
+      }
       face_energy_[k] = neo_hookean_face<kForces>(k, e1, e2, a11, a12, a22, max_stretch_sq);
       continue;
     }
@@ -120,6 +127,16 @@ double MembraneTerm::evaluate(const Vec3List& x, Vec3List* f) {
       face_load_[3 * k] = face_load_[3 * k + 1] = face_load_[3 * k + 2] = load;
     }
   }
+  if (collapsed < nf) {  // the run cannot go on: say which face, and how far it went
+    const Face& face = faces_[collapsed];
+    const Vec3 e1 = x[face.v[1]] - x[face.v[0]], e2 = x[face.v[2]] - x[face.v[0]];
+    const double ratio = e1.cross(e2).norm() / (2.0 * face.area);  // |current / rest area| [-]
+    throw SimulationError("neo-Hookean shell face " + std::to_string(collapsed) + " (vertices " +
+                          std::to_string(face.v[0]) + ", " + std::to_string(face.v[1]) + ", " +
+                          std::to_string(face.v[2]) + ") has collapsed or inverted (area " +
+                          std::to_string(ratio) +
+                          " of its rest area): the law has no energy there");
+  }
   if constexpr (kForces) {
     plan_.gather_add(face_force_, *f);
     max_stretch_sq_ = max_stretch_sq;
@@ -139,7 +156,7 @@ double MembraneTerm::neo_hookean_face(int k, const Vec3& e1, const Vec3& e2, dou
   const double det_a = a11 * a22 - a12 * a12;                   // [m^4]
   const double det_c = det_a * bi.determinant();                // det C = J^2 [-]
   const double tr_c = bi(0, 0) * a11 + 2.0 * bi(0, 1) * a12 + bi(1, 1) * a22;
-  const double ln_det = std::log(det_c);  // NaN for a collapsed or inverted face
+  const double ln_det = std::log(det_c);  // det C > 0: evaluate() stops at a collapsed face
   const double energy =
       face.area * (0.5 * mu * (tr_c - 2.0 - ln_det) + 0.125 * lambda * ln_det * ln_det);
   if constexpr (kForces) {

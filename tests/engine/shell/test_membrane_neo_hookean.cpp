@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "engine/shell/membrane.hpp"
 #include "engine/shell/mesh_builders.hpp"
@@ -176,6 +177,34 @@ TEST(NeoHookeanMembrane, OmegaBoundsTheLargestStiffnessEigenvalue) {
       EXPECT_LT(bound, 4.0 * lmax);
     }
   }
+}
+
+// A collapsed face has no neo-Hookean energy (ln det C = -inf): the term stops the run with a
+// reason that names the face, where the linear law gives a finite energy for the same state.
+TEST(NeoHookeanMembrane, ACollapsedFaceStopsTheRunNamingIt) {
+  const ShellMesh mesh = sphere_with_hole(10e-3, 4e-3, 3e-3, 1e-3);
+  Vec3List x = mesh.rest;
+  const auto& f0 = mesh.faces[0];
+  x[f0[0]] = 0.5 * (x[f0[1]] + x[f0[2]]);  // face 0 flattened onto its edge: area 0
+  MembraneTerm neo(mesh, neo_material());
+  Vec3List f(x.size(), Vec3::Zero());
+  for (int pass = 0; pass < 2; ++pass) {
+    try {
+      if (pass == 0) neo.accumulate(x, f);
+      if (pass == 1) neo.energy(x);
+      ADD_FAILURE() << "pass " << pass << ": no error";
+    } catch (const SimulationError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find("face 0 (vertices " + std::to_string(f0[0])), std::string::npos) << what;
+      EXPECT_NE(what.find("collapsed or inverted"), std::string::npos) << what;
+    }
+  }
+  MembraneTerm lin(mesh, paper_material());
+  EXPECT_TRUE(std::isfinite(lin.accumulate(x, f)));
+  EXPECT_TRUE(std::isfinite(lin.energy(x)));
+  // The term is not left broken: at rest it gives what a fresh one gives (~0, rounding only).
+  MembraneTerm fresh(mesh, neo_material());
+  EXPECT_EQ(neo.energy(mesh.rest), fresh.energy(mesh.rest));
 }
 
 }  // namespace
