@@ -83,7 +83,7 @@ template <bool kForces>
 double MembraneTerm::evaluate(const Vec3List& x, Vec3List* f) {
   double max_stretch_sq = 1.0;
   const int nf = static_cast<int>(faces_.size());
-  int collapsed = nf;  // the lowest neo-Hookean face with det C <= 0 (nf: none)
+  int collapsed = nf;  // the lowest neo-Hookean face of zero area (nf: none)
 #pragma omp parallel for schedule(static) reduction(max : max_stretch_sq) reduction(min : collapsed)
   for (int k = 0; k < nf; ++k) {
     const Face& face = faces_[k];
@@ -91,12 +91,8 @@ double MembraneTerm::evaluate(const Vec3List& x, Vec3List* f) {
     const Vec3 e2 = x[face.v[2]] - x[face.v[0]];
     const double a11 = e1.dot(e1), a12 = e1.dot(e2), a22 = e2.dot(e2);
     if (neo_hookean_) {  // works on the metric itself, not the Green strain
-      // ln det C has no value on a collapsed or inverted face (the law's energy is infinite).
-      if (!((a11 * a22 - a12 * a12) * face.abar_inv.determinant() > 0.0)) {
-        collapsed = std::min(collapsed, k);
-        continue;
-      }
-      face_energy_[k] = neo_hookean_face<kForces>(k, e1, e2, a11, a12, a22, max_stretch_sq);
+      face_energy_[k] =
+          neo_hookean_face<kForces>(k, e1, e2, a11, a12, a22, max_stretch_sq, collapsed);
       continue;
     }
     Eigen::Matrix2d alpha;  // Green strain alpha_ij = (a_ij - abar_ij) / 2 [m^2]
@@ -133,7 +129,7 @@ double MembraneTerm::evaluate(const Vec3List& x, Vec3List* f) {
     const double ratio = e1.cross(e2).norm() / (2.0 * face.area);  // |current / rest area| [-]
     throw SimulationError("neo-Hookean shell face " + std::to_string(collapsed) + " (vertices " +
                           std::to_string(face.v[0]) + ", " + std::to_string(face.v[1]) + ", " +
-                          std::to_string(face.v[2]) + ") has collapsed or inverted (area " +
+                          std::to_string(face.v[2]) + ") has collapsed (area " +
                           std::to_string(ratio) +
                           " of its rest area): the law has no energy there");
   }
@@ -149,14 +145,20 @@ double MembraneTerm::evaluate(const Vec3List& x, Vec3List* f) {
 
 template <bool kForces>
 double MembraneTerm::neo_hookean_face(int k, const Vec3& e1, const Vec3& e2, double a11, double a12,
-                                      double a22, double& max_stretch_sq) {
+                                      double a22, double& max_stretch_sq, int& collapsed) {
   const Face& face = faces_[k];
   const Eigen::Matrix2d& bi = face.abar_inv;
   const double mu = 0.5 * M_ * (1.0 - nu_), lambda = M_ * nu_;  // 2-D Lame moduli [N/m]
   const double det_a = a11 * a22 - a12 * a12;                   // [m^4]
   const double det_c = det_a * bi.determinant();                // det C = J^2 [-]
   const double tr_c = bi(0, 0) * a11 + 2.0 * bi(0, 1) * a12 + bi(1, 1) * a22;
-  const double ln_det = std::log(det_c);  // det C > 0: evaluate() stops at a collapsed face
+  // det C = |e1 x e2|^2 / |ebar1 x ebar2|^2 >= 0: zero only for a face of zero area (a face
+  // turned over keeps its area; the membrane does not see it), where ln det C has no value.
+  if (!(det_c > 0.0)) {
+    collapsed = std::min(collapsed, k);
+    return 0.0;
+  }
+  const double ln_det = std::log(det_c);
   const double energy =
       face.area * (0.5 * mu * (tr_c - 2.0 - ln_det) + 0.125 * lambda * ln_det * ln_det);
   if constexpr (kForces) {

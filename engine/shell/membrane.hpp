@@ -59,10 +59,11 @@ class MembraneTerm : public ShellTerm {
   template <bool kForces>
   double evaluate(const Vec3List& x, Vec3List* f);
   // The neo-Hookean energy of face k with edges e1, e2 and metric a11, a12, a22 [J]; with
-  // kForces its slot forces and load, and its largest squared stretch into max_stretch_sq.
+  // kForces its slot forces and load, and its largest squared stretch into max_stretch_sq. A
+  // face of zero area (det C = 0: the law has no energy) lowers `collapsed` to k and gives 0.
   template <bool kForces>
   double neo_hookean_face(int k, const Vec3& e1, const Vec3& e2, double a11, double a12, double a22,
-                          double& max_stretch_sq);
+                          double& max_stretch_sq, int& collapsed);
 
   std::vector<Face> faces_;
   double M_, nu_;                // membrane rigidity [N/m], Poisson ratio [-]
