@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
 #include <random>
 
 namespace wirepack::analysis {
@@ -454,6 +455,59 @@ std::vector<double> propose_refinement(const std::vector<CriticalSample>& sample
     bisect(gaps, false);
   }
   std::sort(out.begin(), out.end());
+  return out;
+}
+
+SeedProposal propose_seeds(const std::vector<CriticalSample>& samples, const CriticalResult& fit,
+                           const CriticalOptions& opt, bool force) {
+  // The grid values with a finite D, sorted, as given (they name the points of the sweep):
+  // x -> (finite D values, their sum).
+  std::map<double, std::pair<std::size_t, double>> by_x;
+  for (const auto& s : samples) {
+    if (!std::isfinite(s.x) || (opt.log_x && s.x <= 0)) continue;
+    for (double d : s.D)
+      if (std::isfinite(d)) {
+        ++by_x[s.x].first;
+        by_x[s.x].second += d;
+      }
+  }
+  std::vector<double> x, n, m;  // value, finite D, mean D
+  for (const auto& [xi, c] : by_x) {
+    x.push_back(xi);
+    n.push_back(static_cast<double>(c.first));
+    m.push_back(c.second / static_cast<double>(c.first));
+  }
+  if (x.size() < 2) return {};
+  std::size_t lo = 0, hi = 0;  // the chosen values x[lo..hi]
+  const bool have_ci = fit.status == "ok" && std::isfinite(fit.x_c_lo) && std::isfinite(fit.x_c_hi);
+  if (have_ci) {
+    // The first value above the interval's top, and the last below its bottom.
+    std::size_t above = 0;
+    while (above < x.size() && x[above] <= fit.x_c_hi) ++above;
+    std::size_t below = above;
+    while (below > 0 && x[below - 1] >= fit.x_c_lo) --below;
+    lo = below > 0 ? below - 1 : 0;
+    hi = std::min(above, x.size() - 1);
+    if (hi == lo) {  // an interval beyond the range: the two values at that end
+      hi = std::min(lo + 1, x.size() - 1);
+      lo = hi - 1;
+    }
+  } else {
+    if (!force) return {};
+    std::size_t best = 1;
+    for (std::size_t i = 2; i < x.size(); ++i)
+      if (std::abs(m[i] - m[i - 1]) > std::abs(m[best] - m[best - 1])) best = i;
+    lo = best >= 2 ? best - 2 : 0;
+    hi = std::min(best + 1, x.size() - 1);
+  }
+  const double fewest = *std::min_element(n.begin() + static_cast<std::ptrdiff_t>(lo),
+                                          n.begin() + static_cast<std::ptrdiff_t>(hi) + 1);
+  SeedProposal out;
+  const double lack = static_cast<double>(kMinSeedsNearCritical) - fewest;
+  if (lack <= 0 && !force) return out;
+  out.seeds = lack > 0 ? static_cast<std::size_t>(lack) : 1;
+  out.x.assign(x.begin() + static_cast<std::ptrdiff_t>(lo),
+               x.begin() + static_cast<std::ptrdiff_t>(hi) + 1);
   return out;
 }
 

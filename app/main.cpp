@@ -456,9 +456,9 @@ int main(int argc, char** argv) {
   long budget = 0;
   auto* refine = app.add_subcommand(
       "refine",
-      "add grid values where they narrow the interval of the critical point most (before a "
-      "fit: where D changes fastest) and run them with the same seeds; resumable "
-      "(docs/reference.md, \"Critical points\")");
+      "add seeds or grid values where they narrow the interval of the critical point most "
+      "(before a fit: where D changes fastest) and run them; resumable (docs/reference.md, "
+      "\"Critical points\")");
   refine->add_option("dir", refine_opt.dir, "sweep directory (written by wirepack sweep)")
       ->required();
   refine->add_option("--axis", refine_opt.axis,
@@ -469,6 +469,12 @@ int main(int argc, char** argv) {
                    "new runs per slice and round, in whole points of all seeds (default 4 "
                    "points)")
       ->check(CLI::Range(1, 100000));
+  refine
+      ->add_option("--add", refine_opt.add,
+                   "auto (default): seeds at the values in and next to the interval of x_c while "
+                   "they have too few for it (docs/reference.md, \"Refinement\"), then new "
+                   "values; values: values only; seeds: seeds only")
+      ->check(CLI::IsMember({"auto", "values", "seeds"}));
   auto* until_ci_opt = refine->add_option(
       "--until-ci", until_ci,
       "stop when every 95 % interval of x_c is at most this wide (units of the parameter)");

@@ -97,6 +97,32 @@ void append_log(const fs::path& dir, const std::vector<std::string>& lines) {
   for (const auto& l : lines) out << l << '\n';
 }
 
+// The refinement's runs: those beyond the grid's points times the sweep's seeds.
+std::size_t refinement_runs(const Sweep& sw) {
+  return sw.runs.size() - sw.grid_points * sw.seeds.size();
+}
+
+// The sweep's point at `x` on `axis` in slice `s` as a sweep-file object (every axis), or null
+// when a value of another axis is not fixed by the slice.
+json point_at(const Sweep& sw, const std::string& axis, const CriticalSlice& s, double x) {
+  json point = json::object();
+  for (const auto& a : sw.axes) {
+    if (a.pointer == axis) {
+      point[a.key] = x;
+      continue;
+    }
+    const auto it =
+        std::find_if(s.at.begin(), s.at.end(), [&](const auto& p) { return p.first == a.pointer; });
+    if (it != s.at.end() && !it->second.is_null())
+      point[a.key] = it->second;
+    else if (a.values.size() == 1)
+      point[a.key] = a.values[0];
+    else
+      return nullptr;
+  }
+  return point;
+}
+
 std::size_t pending_runs(const fs::path& dir, const Sweep& sw) {
   std::size_t n = 0;
   std::error_code ec;
@@ -115,6 +141,8 @@ RefineOutcome refine_sweep(const RefineOptions& o) {
   if (o.until_ci && !(std::isfinite(*o.until_ci) && *o.until_ci > 0))
     throw InputError("--until-ci: must be a width > 0 in units of the refined parameter (got " +
                      format_number(*o.until_ci) + ")");
+  if (o.add != "auto" && o.add != "values" && o.add != "seeds")
+    throw InputError("--add: must be auto, values or seeds (got " + o.add + ")");
   if (o.budget && *o.budget < 0)
     throw InputError("--budget: must be >= 0 runs (got " + std::to_string(*o.budget) + ")");
   Sweep sw = load_current(dir);
@@ -161,7 +189,7 @@ RefineOutcome refine_sweep(const RefineOptions& o) {
   DirLock lock((dir / ".lock.refine").string());  // one refine per directory
 
   RefineOutcome out;
-  const std::size_t listed_at_start = sw.listed_points.size() * seeds;
+  const std::size_t listed_at_start = refinement_runs(sw);
   // Without --budget and --until-ci: one round, or finishing an interrupted one.
   const bool one_round = !o.budget && !o.until_ci;
   const bool interrupted = pending_runs(dir, sw) > 0;
@@ -184,7 +212,7 @@ RefineOutcome refine_sweep(const RefineOptions& o) {
     const CriticalData data = read_critical_data(ao);
     const auto slices = critical_slices(data.axes, data.points, data.settings.bootstrap_resamples,
                                         axis, data.settings.critical_ranges);
-    out.listed_runs = sw.listed_points.size() * seeds;
+    out.listed_runs = refinement_runs(sw);
     out.lines.clear();
     for (const auto& s : slices)
       out.lines.push_back(name_of(axis) + " at " + slice_text(s) + ": " + fit_text(s.fit));
@@ -209,43 +237,77 @@ RefineOutcome refine_sweep(const RefineOptions& o) {
       stop = "run budget reached: " + std::to_string(out.listed_runs) + " refinement runs of " +
              std::to_string(*budget);
 
-    // Proposals: per slice, as many whole points as the budget leaves.
+    // Proposals: per slice, seeds at the values around an interval that have too few of them
+    // (or as --add says), else whole points, as many runs as the budget leaves.
     json points = sw.resolved.contains("points") ? sw.resolved["points"] : json::array();
+    json extra = sw.resolved.contains("extra_seeds") ? sw.resolved["extra_seeds"] : json::array();
     std::set<std::string> existing;
     for (const auto& r : sw.runs) existing.insert(canonical_json(r.point_values));
+    // New seeds are numbered after every seed of the sweep, the same ones at every point.
+    std::uint64_t next_seed = 0;
+    for (const auto& r : sw.runs) next_seed = std::max(next_seed, r.seed + 1);
     std::vector<std::string> log;
-    std::size_t left = stop.empty() ? (*budget - out.listed_runs) / seeds : 0;
-    std::size_t added = 0;
+    std::size_t left = stop.empty() ? *budget - out.listed_runs : 0;  // runs
+    std::size_t added = 0;                                            // runs
     for (const auto& s : slices) {
-      std::vector<double> xs;
       const bool done = o.until_ci && width(s.fit) <= *o.until_ci;
-      if (left > 0 && !done)
-        xs = analysis::propose_refinement(slice_samples(s, data.points), s.fit,
-                                          static_cast<int>(std::min(per_round, left)), s.options);
+      const auto samples = slice_samples(s, data.points);
+      analysis::SeedProposal more;
+      if (left > 0 && !done && o.add != "values")
+        more = analysis::propose_seeds(samples, s.fit, s.options, o.add == "seeds");
       std::string added_text;
-      for (const double x : xs) {
-        json point = json::object();
-        bool complete = true;
-        for (const auto& a : sw.axes) {
-          if (a.pointer == axis) {
-            point[a.key] = x;
-            continue;
-          }
-          const auto it = std::find_if(s.at.begin(), s.at.end(),
-                                       [&](const auto& p) { return p.first == a.pointer; });
-          if (it != s.at.end() && !it->second.is_null())
-            point[a.key] = it->second;
-          else if (a.values.size() == 1)
-            point[a.key] = a.values[0];
-          else
-            complete = false;
+      if (!more.x.empty()) {
+        // The seeds the values lack, within a round's runs (with --add seeds, as many as a
+        // round's runs give), at least one; with fewer runs left than values, the values
+        // nearest the middle of the chosen ones.
+        auto& xs = more.x;
+        const std::size_t round_runs = std::min(per_round * seeds, left);
+        if (round_runs < xs.size()) {
+          const double mid = (xs.front() + xs.back()) / 2;
+          std::stable_sort(xs.begin(), xs.end(), [&](double a, double b) {
+            return std::abs(a - mid) < std::abs(b - mid);
+          });
+          xs.resize(round_runs);
+          std::sort(xs.begin(), xs.end());
         }
-        if (!complete || !existing.insert(canonical_json(point)).second) continue;
-        points.push_back(point);
-        if (!added_text.empty()) added_text += ' ';
-        added_text += format_number(x);
-        ++added;
-        --left;
+        const std::size_t fit_in = std::max<std::size_t>(1, round_runs / xs.size());
+        const std::size_t per_point =
+            std::min(fit_in, o.add == "seeds" ? std::max(more.seeds, fit_in) : more.seeds);
+        json new_seeds = json::array();
+        for (std::size_t k = 0; k < per_point; ++k) new_seeds.push_back(next_seed + k);
+        std::string at;
+        for (const double x : xs) {
+          json point = point_at(sw, axis, s, x);
+          if (point.is_null() || !existing.count(canonical_json(point))) continue;
+          point["seeds"] = new_seeds;
+          extra.push_back(point);
+          if (!at.empty()) at += ' ';
+          at += format_number(x);
+          added += per_point;
+          left -= std::min(left, per_point);
+        }
+        if (!at.empty()) {
+          added_text = "seeds";
+          for (const auto& seed : new_seeds) {
+            added_text += ' ';
+            added_text += seed.dump();
+          }
+          added_text += " at " + at;
+        }
+      } else {
+        std::vector<double> xs;
+        if (left >= seeds && !done && o.add != "seeds")
+          xs = analysis::propose_refinement(
+              samples, s.fit, static_cast<int>(std::min(per_round, left / seeds)), s.options);
+        for (const double x : xs) {
+          const json point = point_at(sw, axis, s, x);
+          if (point.is_null() || !existing.insert(canonical_json(point)).second) continue;
+          points.push_back(point);
+          if (!added_text.empty()) added_text += ' ';
+          added_text += format_number(x);
+          added += seeds;
+          left -= std::min(left, seeds);
+        }
       }
       const auto& f = s.fit;
       const auto n = [](double v) { return std::isnan(v) ? std::string("nan") : format_number(v); };
@@ -253,7 +315,7 @@ RefineOutcome refine_sweep(const RefineOptions& o) {
                     std::to_string(out.listed_runs) + "," + std::to_string(f.points) + "," +
                     std::to_string(f.values) + "," + csv_field(f.status) + "," + f.model + "," +
                     n(f.x_c) + "," + n(f.x_c_lo) + "," + n(f.x_c_hi) + "," + n(width(f)) + "," +
-                    added_text);
+                    csv_field(added_text));
       if (o.progress)
         *o.progress << "refine: " << name_of(axis) << " at " << slice_text(s) << ": " << fit_text(f)
                     << (added_text.empty() ? "" : "; adding " + added_text) << '\n';
@@ -263,21 +325,22 @@ RefineOutcome refine_sweep(const RefineOptions& o) {
       const bool usable = std::any_of(slices.begin(), slices.end(),
                                       [](const CriticalSlice& s) { return s.fit.points >= 2; });
       out.stop = !stop.empty() ? stop
-                 : usable      ? "no new value to add (the gaps are below the rounding)"
+                 : usable      ? "no new value or seed to add (the gaps are below the rounding)"
                                : "nothing to refine: no slice has two grid values with a finite D "
                                  "(failed runs, or a D window beyond l_max)";
       break;
     }
     // Record the new points before running them: a killed refine continues from here.
     json resolved = sw.resolved;
-    resolved["points"] = points;
+    if (!points.empty()) resolved["points"] = points;
+    if (!extra.empty()) resolved["extra_seeds"] = extra;
     sw = parse_sweep(resolved, refined.string());
     write_file_atomic(refined.string(), sw.resolved.dump(2) + "\n");
     out.sweep_file = refined.string();
-    out.added_runs += added * seeds;
+    out.added_runs += added;
     ++out.rounds;
   }
-  out.listed_runs = sw.listed_points.size() * seeds;
+  out.listed_runs = refinement_runs(sw);
   return out;
 }
 

@@ -178,6 +178,16 @@ Sweep parse_sweep(const json& j, const std::string& source) {
       sw.listed_points.push_back(point_values[p]);
   }
   const std::size_t points = point_values.size();
+  sw.grid_points = grid_points;
+  std::size_t extra_runs = 0;
+  if (const auto it = j.find("extra_seeds"); it != j.end()) {
+    parse_extra_seeds(*it, sw.axes, point_values, sw.seeds, msg, sw.extra_seeds);
+    for (const auto& e : sw.extra_seeds) extra_runs += e.seeds.size();
+    if (!sw.seeds.empty() && points > (kMaxRuns - std::min(kMaxRuns, extra_runs)) / sw.seeds.size())
+      msg.fail("/extra_seeds", "the runs of the sweep are more than " + std::to_string(kMaxRuns) +
+                                   "; split the sweep");
+    if (!msg.empty()) throw InputError(msg.list());
+  }
 
   // Expand: every point, the seeds innermost. Every (point, seed) goes through parse_scene; its
   // messages are mapped onto the sweep file: a point value's pointer -> /grid/<key>/<i> or
@@ -186,59 +196,73 @@ Sweep parse_sweep(const json& j, const std::string& source) {
   const std::string marker = "\x01";   // parse_scene's source; messages start with "\x01: "
   std::vector<std::string> base_msgs;  // base problems in first-seen order ...
   std::map<std::string, std::pair<std::size_t, std::size_t>> base_seen;  // ... -> (count, first)
-  for (std::size_t p = 0; p < points; ++p) {
+  // One (point, seed): its run, or its messages (each point's counted once, in point_msgs).
+  const auto expand = [&](std::size_t p, json& scene, std::uint64_t seed,
+                          std::set<std::string>& point_msgs) {
+    scene["seed"] = seed;
+    try {
+      Scene s = parse_scene(scene, marker);
+      if (!msg.empty() || !base_msgs.empty()) return;  // only errors matter from now on
+      SweepRun run;
+      run.index = sw.runs.size();
+      run.point = p;
+      run.point_values = json::object();
+      // The preset is not in the resolved scene, nor are keys resolved only where they act
+      // (the schema's resolved_where): those take the value the grid gave.
+      for (std::size_t a = 0; a < sw.axes.size(); ++a) {
+        const auto& axis = sw.axes[a];
+        const json::json_pointer ptr(axis.pointer);
+        run.point_values[axis.key] = axis.pointer == "/numerics/preset" ? json(s.numerics_preset)
+                                     : s.resolved.contains(ptr) ? std::as_const(s.resolved).at(ptr)
+                                                                : point_values[p][a];
+      }
+      run.seed = seed;
+      run.id = run_id(s.resolved);
+      run.file = run_file_name(sw.axes, point_values[p], seed, run.id);
+      run.cost = expected_cost(s.engine);
+      run.scene = std::move(s);
+      sw.runs.push_back(std::move(run));
+    } catch (const InputError& e) {
+      for (const auto& m : e.messages()) {
+        const std::string rest = m.substr(marker.size() + 2);  // "/pointer: rule"
+        bool on_axis = false;
+        for (std::size_t a = 0; a < sw.axes.size() && !on_axis; ++a) {
+          const std::string& ptr = sw.axes[a].pointer;
+          if (rest.compare(0, ptr.size() + 2, ptr + ": ") == 0) {
+            msg.add(source + ": " + where[p][a] + rest.substr(ptr.size()));
+            on_axis = true;
+          }
+        }
+        if (on_axis) continue;
+        std::string text = source + ": /base" + rest;
+        if (rest.find(": required key is missing") != std::string::npos ||
+            rest.find(": required when shell") != std::string::npos)
+          text += " (set it in /base or as a /grid axis)";
+        if (!point_msgs.insert(text).second) continue;  // counted once per point
+        auto [it, fresh] = base_seen.try_emplace(text, 0, p);
+        if (fresh) base_msgs.push_back(text);
+        ++it->second.first;
+      }
+    }
+  };
+  const auto point_scene_of = [&](std::size_t p) {
     json scene = sw.base;
     for (std::size_t a = 0; a < sw.axes.size(); ++a)
       set_at(scene, sw.axes[a].pointer, point_values[p][a]);
+    return scene;
+  };
+  for (std::size_t p = 0; p < points; ++p) {
+    json scene = point_scene_of(p);
     std::set<std::string> point_msgs;
-    for (const std::uint64_t seed : sw.seeds) {
-      scene["seed"] = seed;
-      try {
-        Scene s = parse_scene(scene, marker);
-        if (!msg.empty() || !base_msgs.empty()) continue;  // only errors matter from now on
-        SweepRun run;
-        run.index = sw.runs.size();
-        run.point = p;
-        run.point_values = json::object();
-        // The preset is not in the resolved scene, nor are keys resolved only where they act
-        // (the schema's resolved_where): those take the value the grid gave.
-        for (std::size_t a = 0; a < sw.axes.size(); ++a) {
-          const auto& axis = sw.axes[a];
-          const json::json_pointer ptr(axis.pointer);
-          run.point_values[axis.key] = axis.pointer == "/numerics/preset" ? json(s.numerics_preset)
-                                       : s.resolved.contains(ptr)
-                                           ? std::as_const(s.resolved).at(ptr)
-                                           : point_values[p][a];
-        }
-        run.seed = seed;
-        run.id = run_id(s.resolved);
-        run.file = run_file_name(sw.axes, point_values[p], seed, run.id);
-        run.cost = expected_cost(s.engine);
-        run.scene = std::move(s);
-        sw.runs.push_back(std::move(run));
-      } catch (const InputError& e) {
-        for (const auto& m : e.messages()) {
-          const std::string rest = m.substr(marker.size() + 2);  // "/pointer: rule"
-          bool on_axis = false;
-          for (std::size_t a = 0; a < sw.axes.size() && !on_axis; ++a) {
-            const std::string& ptr = sw.axes[a].pointer;
-            if (rest.compare(0, ptr.size() + 2, ptr + ": ") == 0) {
-              msg.add(source + ": " + where[p][a] + rest.substr(ptr.size()));
-              on_axis = true;
-            }
-          }
-          if (on_axis) continue;
-          std::string text = source + ": /base" + rest;
-          if (rest.find(": required key is missing") != std::string::npos ||
-              rest.find(": required when shell") != std::string::npos)
-            text += " (set it in /base or as a /grid axis)";
-          if (!point_msgs.insert(text).second) continue;  // counted once per point
-          auto [it, fresh] = base_seen.try_emplace(text, 0, p);
-          if (fresh) base_msgs.push_back(text);
-          ++it->second.first;
-        }
-      }
-    }
+    for (const std::uint64_t seed : sw.seeds) expand(p, scene, seed, point_msgs);
+  }
+  // The extra seeds' runs after every point's (a seed changes no rule, so a point's problems
+  // are reported above already).
+  for (const auto& e :
+       msg.empty() && base_msgs.empty() ? sw.extra_seeds : std::vector<Sweep::ExtraSeeds>{}) {
+    json scene = point_scene_of(e.point);
+    std::set<std::string> point_msgs;
+    for (const std::uint64_t seed : e.seeds) expand(e.point, scene, seed, point_msgs);
   }
   for (const auto& text : base_msgs) {
     const auto [count, first] = base_seen.at(text);
@@ -270,6 +294,16 @@ Sweep parse_sweep(const json& j, const std::string& source) {
       list.push_back(point);
     }
     sw.resolved["points"] = list;
+  }
+  if (!sw.extra_seeds.empty()) {
+    json list = json::array();
+    for (const auto& e : sw.extra_seeds) {
+      json entry = json::object();
+      for (std::size_t a = 0; a < sw.axes.size(); ++a) entry[sw.axes[a].key] = e.values[a];
+      entry["seeds"] = e.seeds;
+      list.push_back(entry);
+    }
+    sw.resolved["extra_seeds"] = list;
   }
   return sw;
 }

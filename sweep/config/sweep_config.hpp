@@ -1,10 +1,12 @@
 #pragma once
 // Sweep file (docs/design.md §4.4):
 // {"name", "base": {scene}, "grid": {"<key or JSON pointer>": [values]},
-// "points": [{"<key>": value, ...}], "seeds": 10 | [list], "analysis": {...}}. The points are
+// "points": [{"<key>": value, ...}], "seeds": 10 | [list],
+// "extra_seeds": [{"<key>": value, ..., "seeds": [list]}], "analysis": {...}}. The points are
 // the Cartesian product of the grid's axes, then the listed points (each sets every axis); each
-// point runs with every seed; every (point, seed) is one scene validated by parse_scene, errors
-// reported against the sweep file's own pointers (`sweep.json: /grid/mu_s/2: must be >= 0`).
+// point runs with every seed, and a point named in extra_seeds with those seeds too; every
+// (point, seed) is one scene validated by parse_scene, errors reported against the sweep file's
+// own pointers (`sweep.json: /grid/mu_s/2: must be >= 0`).
 #include <cstddef>
 #include <cstdint>
 #include <map>
@@ -29,7 +31,8 @@ struct GridAxis {
 
 // One simulation of the sweep: a grid point and a seed.
 struct SweepRun {
-  std::size_t index = 0;  // position in the deterministic run order (points major, seeds minor)
+  std::size_t index = 0;  // position in the deterministic run order (points major, seeds minor;
+                          // the extra seeds' runs last)
   std::size_t point = 0;  // grid point (mixed radix over the axes, the first axis slowest;
                           // listed points follow the grid's)
   nlohmann::json point_values;  // {axis key: resolved value}, e.g. {"mu_s": 0.5, "rho": 20.0}
@@ -47,13 +50,25 @@ struct Sweep {
   // Listed points ("points": [{"<axis key>": value, ...}]) after the grid's, one value per axis
   // in `axes` order; `wirepack refine` adds its grid values here.
   std::vector<std::vector<nlohmann::json>> listed_points;
-  std::vector<std::uint64_t> seeds;
-  nlohmann::json analysis;     // free-form settings for the analysis stage (an object)
-  nlohmann::json resolved;     // {"name", "base", "grid", ["points",] "seeds" (as a list),
-                               // "analysis"}; "points" only when there are listed points
-  std::vector<SweepRun> runs;  // in run order: index i = point * seeds.size() + seed position
+  std::vector<std::uint64_t> seeds;  // every point's seeds
+  // Further seeds at single points ("extra_seeds"; `wirepack refine` adds them where seeds, not
+  // grid values, narrow the interval of x_c): the point's index and values (as listed_points) and
+  // seeds none of which is in `seeds` or in an earlier entry for that point.
+  struct ExtraSeeds {
+    std::size_t point = 0;
+    std::vector<nlohmann::json> values;
+    std::vector<std::uint64_t> seeds;
+  };
+  std::vector<ExtraSeeds> extra_seeds;
+  nlohmann::json analysis;      // free-form settings for the analysis stage (an object)
+  nlohmann::json resolved;      // {"name", "base", "grid", ["points",] "seeds" (as a list),
+                                // ["extra_seeds",] "analysis"}; the optional ones when not empty
+  std::size_t grid_points = 0;  // points of /grid (the listed points follow)
+  // In run order: index i < (grid_points + listed) * seeds.size() is point i / seeds.size() with
+  // seed position i % seeds.size(); the extra seeds' runs follow, entry by entry.
+  std::vector<SweepRun> runs;
 
-  std::size_t points() const { return seeds.empty() ? 0 : runs.size() / seeds.size(); }
+  std::size_t points() const { return grid_points + listed_points.size(); }
 };
 
 // A parsed JSON document is a sweep (not a scene) when it is an object with a "grid" key.

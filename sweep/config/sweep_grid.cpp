@@ -15,8 +15,8 @@ using json = nlohmann::json;
 
 // Top-level keys of a sweep file, in documentation order.
 const std::vector<std::string>& sweep_keys() {
-  static const std::vector<std::string> keys = {"name",  "base",     "grid",
-                                                "seeds", "analysis", "points"};
+  static const std::vector<std::string> keys = {"name",     "base",   "grid",       "seeds",
+                                                "analysis", "points", "extra_seeds"};
   return keys;
 }
 
@@ -277,6 +277,100 @@ void parse_points(const json& list, const std::vector<GridAxis>& axes, Messages&
 
 // File name of a run: the grid values, the seed and the id, e.g.
 // runs/mu_s-0.5_rho-20_s3_0123456789ab.h5.
+void parse_extra_seeds(const json& list, const std::vector<GridAxis>& axes,
+                       const std::vector<std::vector<json>>& values,
+                       const std::vector<std::uint64_t>& seeds, Messages& msg,
+                       std::vector<Sweep::ExtraSeeds>& out) {
+  if (!list.is_array()) {
+    msg.fail("/extra_seeds",
+             "must be a list of {\"<grid axis>\": value, ..., \"seeds\": [...]} (got " +
+                 describe_value(list) + ")");
+    return;
+  }
+  if (axes.empty() && !list.empty()) {
+    msg.fail("/extra_seeds", "extra seeds need grid axes (/grid names the keys of a point)");
+    return;
+  }
+  std::map<std::string, std::size_t> index;  // canonical point -> index in values
+  for (std::size_t p = 0; p < values.size(); ++p) index.emplace(canonical_json(values[p]), p);
+  std::string keys;
+  for (const auto& axis : axes) keys += (keys.empty() ? "" : ", ") + axis.key;
+  // point -> seed -> where it was given, to name the first place in a message
+  std::map<std::size_t, std::map<std::uint64_t, std::string>> has;
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    const std::string here = "/extra_seeds/" + std::to_string(k);
+    const json& obj = list[k];
+    if (!obj.is_object()) {
+      msg.fail(here,
+               "an entry must be an object {\"<grid axis>\": value, ..., \"seeds\": [...]} (got " +
+                   describe_value(obj) + ")");
+      continue;
+    }
+    bool ok = true;
+    for (const auto& item : obj.items()) {
+      const std::string key = item.key();  // (see parse_points: clang 14 and structured bindings)
+      if (key != "seeds" &&
+          std::none_of(axes.begin(), axes.end(), [&](const GridAxis& a) { return a.key == key; })) {
+        msg.fail(pointer_child(here, key),
+                 "not a grid axis; an entry sets exactly: " + keys + " and seeds");
+        ok = false;
+      }
+    }
+    std::vector<json> v;
+    for (const auto& axis : axes) {
+      const auto it = obj.find(axis.key);
+      if (it == obj.end()) {
+        msg.fail(
+            pointer_child(here, axis.key),
+            "required key is missing (an entry names a point by every grid axis: " + keys + ")");
+        ok = false;
+        continue;
+      }
+      v.push_back(*it);
+    }
+    const auto s = obj.find("seeds");
+    if (s == obj.end()) {
+      msg.fail(here + "/seeds", "required key is missing (the seeds to add at this point)");
+      ok = false;
+    } else if (!s->is_array() || s->empty()) {
+      msg.fail(here + "/seeds",
+               "must be a non-empty list of seeds (integers >= 0; got " + describe_value(*s) + ")");
+      ok = false;
+    }
+    if (!ok) continue;
+    const auto found = index.find(canonical_json(v));
+    if (found == index.end()) {
+      msg.fail(here,
+               "names no point of the sweep (of /grid or /points); add the point to "
+               "/points to run it with every seed");
+      continue;
+    }
+    auto& given = has[found->second];
+    if (given.empty())
+      for (const std::uint64_t seed : seeds) given.emplace(seed, "/seeds");
+    Sweep::ExtraSeeds e;
+    e.point = found->second;
+    e.values = std::move(v);
+    for (std::size_t i = 0; i < s->size(); ++i) {
+      const std::string p = here + "/seeds/" + std::to_string(i);
+      const json& x = (*s)[i];
+      if (!x.is_number_unsigned()) {
+        msg.fail(p, "a seed must be an integer >= 0 (got " + describe_value(x) + ")");
+        continue;
+      }
+      const auto seed = x.get<std::uint64_t>();
+      if (const auto f = given.find(seed); f != given.end()) {
+        msg.fail(
+            p, "the point already has seed " + std::to_string(seed) + " (from " + f->second + ")");
+        continue;
+      }
+      given.emplace(seed, p);
+      e.seeds.push_back(seed);
+    }
+    out.push_back(std::move(e));
+  }
+}
+
 std::string run_file_name(const std::vector<GridAxis>& axes, const std::vector<json>& values,
                           std::uint64_t seed, const std::string& id) {
   std::string readable;

@@ -1,7 +1,7 @@
 #pragma once
 // The pieces of sweep-file parsing (sweep_config.cpp): the identity's canonical JSON, file-name
-// parts, collected messages, and the parsers of "seeds", "grid" and "points". Internal to the
-// sweep layer (docs/design.md §4.4).
+// parts, collected messages, and the parsers of "seeds", "grid", "points" and "extra_seeds".
+// Internal to the sweep layer (docs/design.md §4.4).
 #include <cstddef>
 #include <cstdint>
 #include <set>
@@ -62,6 +62,13 @@ void parse_axes(const nlohmann::json& grid, Messages& msg, std::vector<GridAxis>
 void parse_points(const nlohmann::json& list, const std::vector<GridAxis>& axes, Messages& msg,
                   std::vector<std::vector<nlohmann::json>>& values,
                   std::vector<std::vector<std::string>>& where);
+// The further seeds at single points (/extra_seeds): objects giving a value for every grid axis
+// (naming a point of `values`, the grid's or a listed one) and "seeds", a non-empty list of
+// integers >= 0 none of which the point already has (from /seeds or an earlier entry).
+void parse_extra_seeds(const nlohmann::json& list, const std::vector<GridAxis>& axes,
+                       const std::vector<std::vector<nlohmann::json>>& values,
+                       const std::vector<std::uint64_t>& seeds, Messages& msg,
+                       std::vector<Sweep::ExtraSeeds>& out);
 // File name of a run: the grid values, the seed and the id, e.g.
 // runs/mu_s-0.5_rho-20_s3_0123456789ab.h5.
 std::string run_file_name(const std::vector<GridAxis>& axes,

@@ -160,6 +160,40 @@ TEST(CliRefine, KilledRefineResumes) {
   EXPECT_NE(third.err.find("0 rounds added 0 runs"), std::string::npos) << third.err;
 }
 
+// --add seeds: new seeds (numbered after the sweep's) at grid values near the transition, run and
+// recorded in refine.json's extra_seeds; analyze counts them with their points.
+TEST(CliRefine, AddSeedsRunsNewSeedsAtExistingPoints) {
+  TempDir dir;
+  make_sweep(dir);
+  const Result r = wirepack(dir, "refine out --add seeds --runs 4 --threads 1");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("adding seeds 3"), std::string::npos) << r.err;
+  const sweep::Sweep sw = refined_sweep(dir);
+  EXPECT_TRUE(sw.listed_points.empty());
+  ASSERT_FALSE(sw.extra_seeds.empty());
+  std::size_t extra = 0;
+  for (const auto& e : sw.extra_seeds) {
+    EXPECT_LT(e.point, 3u);  // grid points
+    ASSERT_FALSE(e.seeds.empty());
+    EXPECT_EQ(e.seeds.front(), 3u);
+    extra += e.seeds.size();
+  }
+  EXPECT_LE(extra, 4u);
+  ASSERT_EQ(sw.runs.size(), 6u + extra);
+  for (const auto& run : sw.runs)
+    EXPECT_EQ(sweep::read_run_file(dir / ("out/" + run.file)).status, sweep::RunStatus::Complete)
+        << run.file;
+  const json m = json::parse(read_text(dir / "out/manifest.json"));
+  EXPECT_EQ(m["counts"]["complete"], 6 + static_cast<int>(extra));
+  EXPECT_EQ(m["sweep"]["extra_seeds"].size(), sw.extra_seeds.size());
+  EXPECT_NE(read_text(dir / "out/refine_log.csv").find(",seeds 3"), std::string::npos);
+  // The points with an extra seed have 3 seeds in the analysis.
+  const Result a = wirepack(dir, "analyze out --no-plots");
+  ASSERT_EQ(a.code, 0) << a.err;
+  const std::string curve = read_text(dir / "out/analysis/D_vs_mu_s.csv");
+  EXPECT_NE(curve.find(",3,"), std::string::npos) << curve;
+}
+
 TEST(CliRefine, BadInputExits2AndWritesNothing) {
   TempDir dir;
   make_sweep(dir);
@@ -178,6 +212,7 @@ TEST(CliRefine, BadInputExits2AndWritesNothing) {
       {"refine out --until-ci 0", "--until-ci: must be a width > 0"},
       {"refine out --budget -4", "--budget: must be >= 0 runs"},
       {"refine out --runs 0", "--runs"},
+      {"refine out --add more", "--add"},
   };
   for (const auto& [args, message] : cases) {
     SCOPED_TRACE(args);

@@ -407,5 +407,74 @@ TEST(SweepConfig, InvalidListedPointsNameThePointer) {
   EXPECT_TRUE(has_message(e, "sweep.json: /points/0/mu_s: must be >= 0")) << joined(e);
 }
 
+// Extra seeds at single points (what `wirepack refine` adds near x_c): their runs follow every
+// point's, with the ids a sweep with those seeds in /seeds gives, and the resolved sweep keeps
+// them.
+TEST(SweepConfig, ExtraSeedsAddRunsAtNamedPoints) {
+  const Sweep sw = parse_text(R"({
+    "name": "t", "base": {"rho": 10, "shell": "rigid", "l_max": 1, "numerics": {"element_length": 1e-3}},
+    "grid": {"mu_s": [0, 1]}, "points": [{"mu_s": 0.5}], "seeds": 2,
+    "extra_seeds": [{"mu_s": 0.5, "seeds": [3, 4]}, {"mu_s": 0, "seeds": [7]},
+                    {"mu_s": 0.5, "seeds": [5]}]})");
+  EXPECT_EQ(sw.grid_points, 2u);
+  EXPECT_EQ(sw.points(), 3u);
+  ASSERT_EQ(sw.runs.size(), 3u * 2u + 4u);
+  ASSERT_EQ(sw.extra_seeds.size(), 3u);
+  EXPECT_EQ(sw.extra_seeds[0].point, 2u);
+  EXPECT_EQ(sw.extra_seeds[1].point, 0u);
+  const std::vector<std::pair<std::size_t, std::uint64_t>> tail = {{2, 3}, {2, 4}, {0, 7}, {2, 5}};
+  for (std::size_t k = 0; k < tail.size(); ++k) {
+    const SweepRun& r = sw.runs[6 + k];
+    EXPECT_EQ(r.index, 6 + k);
+    EXPECT_EQ(r.point, tail[k].first);
+    EXPECT_EQ(r.seed, tail[k].second);
+  }
+  // The same (point, seed) as an ordinary run: the same id and file.
+  const Sweep plain = parse_text(R"({
+    "name": "t", "base": {"rho": 10, "shell": "rigid", "l_max": 1, "numerics": {"element_length": 1e-3}},
+    "grid": {"mu_s": [0.5]}, "seeds": [3, 4]})");
+  EXPECT_EQ(sw.runs[6].id, plain.runs[0].id);
+  EXPECT_EQ(sw.runs[7].file, plain.runs[1].file);
+  // The resolved sweep (the manifest's) parses to the same runs.
+  EXPECT_EQ(sw.resolved["extra_seeds"], json::parse(R"([{"mu_s": 0.5, "seeds": [3, 4]},
+    {"mu_s": 0, "seeds": [7]}, {"mu_s": 0.5, "seeds": [5]}])"));
+  const Sweep again = parse_sweep(sw.resolved, "manifest");
+  ASSERT_EQ(again.runs.size(), sw.runs.size());
+  for (std::size_t i = 0; i < sw.runs.size(); ++i) EXPECT_EQ(again.runs[i].file, sw.runs[i].file);
+  // Without extra seeds the resolved sweep has no such key (manifests unchanged).
+  EXPECT_FALSE(plain.resolved.contains("extra_seeds"));
+}
+
+TEST(SweepConfig, InvalidExtraSeedsNameThePointer) {
+  const std::string head = R"({"name": "t", "base": {"rho": 10, "shell": "rigid", "l_max": 1},
+    "grid": {"mu_s": [0, 1]}, "seeds": 2, "extra_seeds": )";
+  auto e = errors_of(head + R"({"mu_s": 0}})");
+  EXPECT_TRUE(has_message(e, "sweep.json: /extra_seeds: must be a list")) << joined(e);
+  e = errors_of(head + R"([{"mu_s": 0.5, "seeds": [3]}]})");
+  EXPECT_TRUE(has_message(e, "sweep.json: /extra_seeds/0: names no point of the sweep"))
+      << joined(e);
+  e = errors_of(head + R"([{"mu_s": 0, "seeds": [2, 3]}]})");
+  EXPECT_TRUE(has_message(
+      e, "sweep.json: /extra_seeds/0/seeds/0: the point already has seed 2 (from /seeds)"))
+      << joined(e);
+  e = errors_of(head + R"([{"mu_s": 1, "seeds": [3]}, {"mu_s": 1, "seeds": [4, 3]}]})");
+  EXPECT_TRUE(has_message(e,
+                          "sweep.json: /extra_seeds/1/seeds/1: the point already has seed 3 "
+                          "(from /extra_seeds/0/seeds/0)"))
+      << joined(e);
+  e = errors_of(head + R"([{"mu_s": 1}, {"mu_s": 1, "seeds": []}, {"rho": 8, "seeds": [-1]}]})");
+  EXPECT_TRUE(has_message(e, "sweep.json: /extra_seeds/0/seeds: required key is missing"))
+      << joined(e);
+  EXPECT_TRUE(has_message(e, "sweep.json: /extra_seeds/1/seeds: must be a non-empty list"))
+      << joined(e);
+  EXPECT_TRUE(has_message(e, "sweep.json: /extra_seeds/2/rho: not a grid axis")) << joined(e);
+  EXPECT_TRUE(has_message(e, "sweep.json: /extra_seeds/2/mu_s: required key is missing"))
+      << joined(e);
+  // The same seed at another point is fine.
+  EXPECT_EQ(
+      parse_text(head + R"([{"mu_s": 0, "seeds": [3]}, {"mu_s": 1, "seeds": [3]}]})").runs.size(),
+      6u);
+}
+
 }  // namespace
 }  // namespace wirepack::sweep
