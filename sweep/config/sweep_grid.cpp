@@ -211,6 +211,44 @@ void parse_axes(const json& grid, Messages& msg, std::vector<GridAxis>& axes) {
             [](const GridAxis& a, const GridAxis& b) { return a.pointer < b.pointer; });
 }
 
+namespace {
+
+// The grid-axis values of the entry `obj` at `here` (of /points or /extra_seeds), in axes order,
+// with their pointers; `also` is one further key the entry may have ("" for none) and `what`
+// names an entry in messages. False, with the messages added, when a key is not a grid axis or
+// an axis is missing.
+bool entry_values(const json& obj, const std::vector<GridAxis>& axes, const std::string& here,
+                  const std::string& also, const std::string& what, Messages& msg,
+                  std::vector<json>& v, std::vector<std::string>& w) {
+  bool ok = true;
+  std::string keys;
+  for (const auto& axis : axes) keys += (keys.empty() ? "" : ", ") + axis.key;
+  for (const auto& item : obj.items()) {
+    // A plain variable, not a structured binding: clang 14 (the fuzz build) cannot capture one.
+    const std::string key = item.key();
+    if (key != also &&
+        std::none_of(axes.begin(), axes.end(), [&](const GridAxis& a) { return a.key == key; })) {
+      msg.fail(pointer_child(here, key), "not a grid axis; " + what + " sets exactly: " + keys +
+                                             (also.empty() ? "" : " and " + also));
+      ok = false;
+    }
+  }
+  for (const auto& axis : axes) {
+    const auto it = obj.find(axis.key);
+    if (it == obj.end()) {
+      msg.fail(pointer_child(here, axis.key),
+               "required key is missing (" + what + " sets every grid axis: " + keys + ")");
+      ok = false;
+      continue;
+    }
+    v.push_back(*it);
+    w.push_back(pointer_child(here, axis.key));
+  }
+  return ok;
+}
+
+}  // namespace
+
 // The listed points (/points): objects giving a value for every grid axis, none repeating a
 // grid point or an earlier listed one. Appends to values and where (see parse_sweep).
 void parse_points(const json& list, const std::vector<GridAxis>& axes, Messages& msg,
@@ -235,31 +273,9 @@ void parse_points(const json& list, const std::vector<GridAxis>& axes, Messages&
                          describe_value(obj) + ")");
       continue;
     }
-    bool ok = true;
-    std::string keys;
-    for (const auto& axis : axes) keys += (keys.empty() ? "" : ", ") + axis.key;
-    for (const auto& item : obj.items()) {
-      // A plain variable, not a structured binding: clang 14 (the fuzz build) cannot capture one.
-      const std::string key = item.key();
-      if (std::none_of(axes.begin(), axes.end(), [&](const GridAxis& a) { return a.key == key; })) {
-        msg.fail(pointer_child(here, key), "not a grid axis; a point sets exactly: " + keys);
-        ok = false;
-      }
-    }
     std::vector<json> v;
     std::vector<std::string> w;
-    for (const auto& axis : axes) {
-      const auto it = obj.find(axis.key);
-      if (it == obj.end()) {
-        msg.fail(pointer_child(here, axis.key),
-                 "required key is missing (a point sets every grid axis: " + keys + ")");
-        ok = false;
-        continue;
-      }
-      v.push_back(*it);
-      w.push_back(pointer_child(here, axis.key));
-    }
-    if (!ok) continue;
+    if (!entry_values(obj, axes, here, "", "a point", msg, v, w)) continue;
     const auto [it, fresh] = seen.emplace(canonical_json(v), values.size());
     if (!fresh) {
       const std::size_t other = it->second;
@@ -293,8 +309,6 @@ void parse_extra_seeds(const json& list, const std::vector<GridAxis>& axes,
   }
   std::map<std::string, std::size_t> index;  // canonical point -> index in values
   for (std::size_t p = 0; p < values.size(); ++p) index.emplace(canonical_json(values[p]), p);
-  std::string keys;
-  for (const auto& axis : axes) keys += (keys.empty() ? "" : ", ") + axis.key;
   // point -> seed -> where it was given, to name the first place in a message
   std::map<std::size_t, std::map<std::uint64_t, std::string>> has;
   for (std::size_t k = 0; k < list.size(); ++k) {
@@ -306,28 +320,9 @@ void parse_extra_seeds(const json& list, const std::vector<GridAxis>& axes,
                    describe_value(obj) + ")");
       continue;
     }
-    bool ok = true;
-    for (const auto& item : obj.items()) {
-      const std::string key = item.key();  // (see parse_points: clang 14 and structured bindings)
-      if (key != "seeds" &&
-          std::none_of(axes.begin(), axes.end(), [&](const GridAxis& a) { return a.key == key; })) {
-        msg.fail(pointer_child(here, key),
-                 "not a grid axis; an entry sets exactly: " + keys + " and seeds");
-        ok = false;
-      }
-    }
     std::vector<json> v;
-    for (const auto& axis : axes) {
-      const auto it = obj.find(axis.key);
-      if (it == obj.end()) {
-        msg.fail(
-            pointer_child(here, axis.key),
-            "required key is missing (an entry names a point by every grid axis: " + keys + ")");
-        ok = false;
-        continue;
-      }
-      v.push_back(*it);
-    }
+    std::vector<std::string> w;
+    bool ok = entry_values(obj, axes, here, "seeds", "an entry", msg, v, w);
     const auto s = obj.find("seeds");
     if (s == obj.end()) {
       msg.fail(here + "/seeds", "required key is missing (the seeds to add at this point)");
