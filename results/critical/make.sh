@@ -29,7 +29,7 @@ build/wirepack sweep scenes/critical_mu_l20.sweep.json --out "$coarse" --threads
   > /dev/null
 keep "$coarse" coarse
 # 2. Refinement: 3 rounds of 8 runs (2 values x 4 seeds) where the interval of mu_c is.
-build/wirepack refine "$coarse" --runs 8 --budget 24 --threads "$threads" > /dev/null
+build/wirepack refine "$coarse" --add values --runs 8 --budget 24 --threads "$threads" > /dev/null
 keep "$coarse" refined
 cp "$coarse"/refine.json "$coarse"/refine_log.csv "$out/refined/"
 # 3. The uniform grid with about as many runs (44), reusing the coarse grid's runs.
