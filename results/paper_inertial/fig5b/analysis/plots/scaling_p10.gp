@@ -1,6 +1,6 @@
-# Scaling with l of grid point 1 (log-log, fitted power laws); data: ../series.csv, ../exponents.csv
-# Render: gnuplot scaling_p1.gp
-if (!exists("out")) out = "scaling_p1.png"
+# Scaling with l of grid point 10 (log-log, fitted power laws); data: ../series.csv, ../exponents.csv
+# Render: gnuplot scaling_p10.gp
+if (!exists("out")) out = "scaling_p10.png"
 if (strstrt(GPVAL_TERMINALS, "pngcairo") > 0) {
   set terminal pngcairo noenhanced size 1500,900
 } else {
@@ -2681,7 +2681,7 @@ $d5_1 << EOD
 9.500077069174559 3.3118598802951285 0
 49.900145951321235 197.2215415901963 0
 EOD
-set multiplot layout 2,3 title "point 1: mu_s = 1"
+set multiplot layout 2,3 title "point 10: mu_s = 1"
 reset
 set grid
 set key bottom right

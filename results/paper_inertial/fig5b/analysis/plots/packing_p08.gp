@@ -1,6 +1,6 @@
-# The packing of grid point 0 at l = 50 (the first run with a snapshot there), two projections, over the shell
-# Render: gnuplot packing_p0.gp
-if (!exists("out")) out = "packing_p0.png"
+# The packing of grid point 8 at l = 50 (the first run with a snapshot there), two projections, over the shell
+# Render: gnuplot packing_p08.gp
+if (!exists("out")) out = "packing_p08.png"
 if (strstrt(GPVAL_TERMINALS, "pngcairo") > 0) {
   set terminal pngcairo noenhanced size 1000,520
 } else {
@@ -4901,7 +4901,7 @@ $d1_1 << EOD
 -0.0007870895700441488 -0.944773271962303 0
 2.492412864711225e-05 -0.9944882992141102 0
 EOD
-set multiplot layout 1,2 title "point 0 at l = 50: mu_s = 0.5"
+set multiplot layout 1,2 title "point 8 at l = 50: mu_s = 0.5"
 reset
 set grid
 set key off

@@ -1,6 +1,6 @@
-# Scaling with l of grid point 0 (log-log, fitted power laws); data: ../series.csv, ../exponents.csv
-# Render: gnuplot scaling_p0.gp
-if (!exists("out")) out = "scaling_p0.png"
+# Scaling with l of grid point 8 (log-log, fitted power laws); data: ../series.csv, ../exponents.csv
+# Render: gnuplot scaling_p08.gp
+if (!exists("out")) out = "scaling_p08.png"
 if (strstrt(GPVAL_TERMINALS, "pngcairo") > 0) {
   set terminal pngcairo noenhanced size 1500,900
 } else {
@@ -2671,7 +2671,7 @@ $d5_1 << EOD
 9.10001076742156 1.0177405906814192 0
 49.90011878964118 275.4788039753659 0
 EOD
-set multiplot layout 2,3 title "point 0: mu_s = 0.5"
+set multiplot layout 2,3 title "point 8: mu_s = 0.5"
 reset
 set grid
 set key bottom right

@@ -1,6 +1,6 @@
-# Distributions at l = 50 of grid point 0 with lognormal fits; data: ../distributions.csv
-# Render: gnuplot distributions_p0.gp
-if (!exists("out")) out = "distributions_p0.png"
+# Distributions at l = 50 of grid point 8 with lognormal fits; data: ../distributions.csv
+# Render: gnuplot distributions_p08.gp
+if (!exists("out")) out = "distributions_p08.png"
 if (strstrt(GPVAL_TERMINALS, "pngcairo") > 0) {
   set terminal pngcairo noenhanced size 1200,500
 } else {
@@ -479,7 +479,7 @@ $d1_1 << EOD
 5.323891911074316 0.000437713761833532 0
 5.338232390880863 0.00037329357893252656 0
 EOD
-set multiplot layout 1,2 title "point 0 at l = 50: mu_s = 0.5"
+set multiplot layout 1,2 title "point 8 at l = 50: mu_s = 0.5"
 reset
 set grid
 set key top left

@@ -1,6 +1,6 @@
-# Distributions at l = 50 of grid point 1 with lognormal fits; data: ../distributions.csv
-# Render: gnuplot distributions_p1.gp
-if (!exists("out")) out = "distributions_p1.png"
+# Distributions at l = 50 of grid point 10 with lognormal fits; data: ../distributions.csv
+# Render: gnuplot distributions_p10.gp
+if (!exists("out")) out = "distributions_p10.png"
 if (strstrt(GPVAL_TERMINALS, "pngcairo") > 0) {
   set terminal pngcairo noenhanced size 1200,500
 } else {
@@ -479,7 +479,7 @@ $d1_1 << EOD
 5.250485977081526 0.0004303392125293841 0
 5.265072203899498 0.0003670043731939948 0
 EOD
-set multiplot layout 1,2 title "point 1 at l = 50: mu_s = 1"
+set multiplot layout 1,2 title "point 10 at l = 50: mu_s = 1"
 reset
 set grid
 set key top left

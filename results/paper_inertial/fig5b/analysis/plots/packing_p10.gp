@@ -1,6 +1,6 @@
-# The packing of grid point 1 at l = 50 (the first run with a snapshot there), two projections, over the shell
-# Render: gnuplot packing_p1.gp
-if (!exists("out")) out = "packing_p1.png"
+# The packing of grid point 10 at l = 50 (the first run with a snapshot there), two projections, over the shell
+# Render: gnuplot packing_p10.gp
+if (!exists("out")) out = "packing_p10.png"
 if (strstrt(GPVAL_TERMINALS, "pngcairo") > 0) {
   set terminal pngcairo noenhanced size 1000,520
 } else {
@@ -4901,7 +4901,7 @@ $d1_1 << EOD
 0.0038569358361686215 -0.9446820593416438 0
 2.492412864711225e-05 -0.9943581805378633 0
 EOD
-set multiplot layout 1,2 title "point 1 at l = 50: mu_s = 1"
+set multiplot layout 1,2 title "point 10 at l = 50: mu_s = 1"
 reset
 set grid
 set key off
