@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 #include <string>
 
 #include "engine/contact/wire_shell_probe.hpp"
@@ -206,7 +208,12 @@ struct Simulation::Impl {
   }
 
   void step() {
-    const double dt = integrator.step(state, eval_fn(), moved_fn());
+    double dt = 0;
+    try {
+      dt = integrator.step(state, eval_fn(), moved_fn());
+    } catch (const SimulationError& e) {
+      throw SimulationError(std::string(e.what()) + "; " + stiffest_term());
+    }
     commit();
     time += dt;
     ++steps;
@@ -227,6 +234,18 @@ struct Simulation::Impl {
       feeder_work += total_energy(state.n_free) - E_before;
       feeder_power = guide_power();
     }
+  }
+
+  // The term whose omega_max^2 was largest at the last evaluation, with its stable step [s].
+  std::string stiffest_term() const {
+    std::size_t k_max = 0;
+    for (std::size_t k = 1; k < term_omega2.size(); ++k)
+      if (term_omega2[k] > term_omega2[k_max]) k_max = k;
+    if (term_omega2.empty() || !(term_omega2[k_max] > 0)) return "no term bounds the step";
+    std::ostringstream out;
+    out << std::setprecision(3) << "stiffest term " << assembly.terms[k_max]->name()
+        << " (2/omega_max " << 2.0 / std::sqrt(term_omega2[k_max]) << " s)";
+    return out.str();
   }
 
   // Checkpoint layout; bump it whenever what save() writes changes.

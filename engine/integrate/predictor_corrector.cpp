@@ -68,21 +68,21 @@ double PredictorCorrector::step(State& s, const EvaluateFn& eval, const Position
     // Corrector error estimate: dt^2/6 |a' - a| (positions), r dt^2/6 |alpha' - alpha| (twist).
     double da = 0.0;
     bool finite = true;
+    Where peak;  // the DOF where |a' - a| peaks (named in a collapse message)
     for (int i = 0; i < s.n_free; ++i) {
-      const double d = (a_new_[i] - a_[i]).squaredNorm();
+      const double d = (a_new_[i] - a_[i]).norm();
       finite = finite && std::isfinite(d);
-      da = std::max(da, d);
+      if (d > da) da = d, peak = {"wire node", i};
     }
-    da = std::sqrt(da);
     for (int j = 0; j < ne; ++j) {
       const double d = r_ * std::abs(alpha_new_[j] - alpha_[j]);
       finite = finite && std::isfinite(d);
-      da = std::max(da, d);
+      if (d > da) da = d, peak = {"twist of wire edge", j};
     }
     for (int k = 0; k < nv; ++k) {
       const double d = (sa_new_[k] - sa_[k]).norm();
       finite = finite && std::isfinite(d);
-      da = std::max(da, d);
+      if (d > da) da = d, peak = {"shell vertex", k};
     }
     const double err = dt * dt / 6.0 * da;
     dt_stable_ = stable_step(omega2);
@@ -92,7 +92,12 @@ double PredictorCorrector::step(State& s, const EvaluateFn& eval, const Position
     const bool reject = !finite || err > 2.0 * c_.tolerance || dt > 1.5 * dt_stable_;
     if (reject) {
       ++rejected_;
-      dt_ = std::min(dt * std::max(c_.min_shrink, std::min(factor, 0.9)), dt_stable_);
+      const double shrunk = dt * std::max(c_.min_shrink, std::min(factor, 0.9));
+      dt_ = std::min(shrunk, dt_stable_);
+      // A trial that overshot deep into a contact barrier reports a stability step far below the
+      // floor that a shorter step need not reach: try the shorter step before giving up (the
+      // acceptance test above still bounds every accepted step by its own stability step).
+      if (!(dt_ > c_.dt_floor) && shrunk > c_.dt_floor) dt_ = shrunk;
       if (!(dt_ > c_.dt_floor)) {
         // Leave the state at the start of the step.
         s.x = x0_;
@@ -104,7 +109,10 @@ double PredictorCorrector::step(State& s, const EvaluateFn& eval, const Position
         if (!finite) throw SimulationError("non-finite forces (NaN/Inf)");
         std::ostringstream why;  // the floor is ~1e-9 s: std::to_string printed "0.000000"
         why << std::setprecision(3) << "time step collapsed below " << c_.dt_floor
-            << " s (the error control's last try " << dt_ << " s)";
+            << " s (the error control's last try " << dt_ << " s; at " << dt
+            << " s the position error " << err << " m against the tolerance " << c_.tolerance
+            << " m peaked at " << peak.kind << " " << peak.index << ", the stability step "
+            << dt_stable_ << " s)";
         throw SimulationError(why.str());
       }
       // Retry from the start: the predictor rewrites the positions and velocities, the

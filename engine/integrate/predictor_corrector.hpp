@@ -57,6 +57,11 @@ class PredictorCorrector {
 
  private:
   double stable_step(double omega2) const;
+  // A degree of freedom named in a collapse message.
+  struct Where {
+    const char* kind = "no DOF";
+    int index = -1;
+  };
   template <class Self, class Archive>
   static void serialize(Self& pc, Archive& ar);
 

@@ -64,8 +64,9 @@ TEST(PredictorCorrector, DampingDissipatesEnergy) {
 }
 
 // A step that no tolerance can be met with collapses to the floor and fails with a reason that
-// names the floor in seconds (it read "0.000000 s" at the default floor of ~1e-9 s) and leaves
-// the state where the step started.
+// names the floor in seconds (it read "0.000000 s" at the default floor of ~1e-9 s) and the kind
+// of DOF where the error peaked (a rod without twist: a wire node), and leaves the state where the
+// step started.
 TEST(PredictorCorrector, CollapsedStepSaysItsFloor) {
   FreeRod rod = lumped_rod(0.0, 4e5);
   StepControl c = rod.control(0.0);
@@ -79,7 +80,52 @@ TEST(PredictorCorrector, CollapsedStepSaysItsFloor) {
     why = e.what();
   }
   EXPECT_NE(why.find("time step collapsed below 1e-09 s"), std::string::npos) << why;
+  EXPECT_NE(why.find("peaked at wire node "), std::string::npos) << why;
   EXPECT_EQ(rod.s.x, start);
+}
+
+// A trial step that overshoots into a contact barrier reports a stability step far below the
+// floor (the barrier's stiffness diverges at its end), although a shorter step from the same
+// start never reaches the barrier. The step must then shrink by the per-try factor and go on,
+// not collapse: a particle at 1 m/s approaches a "barrier" at 1 mm, beyond which the
+// acceleration is -1e12 m/s^2 and omega^2 = 1e40 / s^2 (a stability step of ~1e-20 s against
+// the floor of 1e-9 s). It must get within 1 % of the barrier; before the rescue it failed at
+// its first trial (0.18 s, past the barrier).
+TEST(PredictorCorrector, AnOvershootingTrialDoesNotCollapseTheStep) {
+  const double barrier = 1e-3;
+  State s;
+  s.x = {Vec3::Zero()};
+  s.v = {Vec3(1.0, 0.0, 0.0)};
+  s.n_free = 1;
+  const EvaluateFn eval = [&](State& st, Vec3List& a, std::vector<double>& alpha,
+                              Vec3List& shell_a) {
+    alpha.clear();
+    shell_a.clear();
+    const bool inside = st.x[0][0] > barrier;
+    a.assign(1, inside ? Vec3(-1e12, 0.0, 0.0) : Vec3::Zero());
+    return inside ? 1e40 : 1.0;
+  };
+  const PositionsChangedFn moved = [](State&) {};
+  StepControl c;
+  c.tolerance = 1e-9;
+  c.dt_floor = 1e-9;
+  PredictorCorrector pc(c, 0.5e-3);
+  pc.initialise(s, eval, moved);
+  int steps = 0;
+  std::string why;
+  try {
+    while (s.x[0][0] < 0.99 * barrier && steps < 100000) {
+      pc.step(s, eval, moved);
+      ++steps;
+    }
+  } catch (const SimulationError& e) {
+    why = e.what();
+  }
+  std::printf("  %d steps, %ld rejected, x = %.6e m\n", steps, pc.rejected(), s.x[0][0]);
+  EXPECT_EQ(why, "");
+  EXPECT_GE(s.x[0][0], 0.99 * barrier);
+  EXPECT_LT(s.x[0][0], barrier);
+  EXPECT_GT(pc.rejected(), 0);  // it did overshoot
 }
 
 }  // namespace
