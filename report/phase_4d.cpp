@@ -123,7 +123,11 @@ std::vector<std::pair<std::string, std::string>> phase_4d_plots(const std::vecto
       }
     }
     if (most < 2) continue;
-    // One curve per combination of the other parameters (and the non-transition ones).
+    // One curve per combination of the other parameters (and the non-transition ones), and per
+    // source where the rows come from several: their protocols (l window, seeds) may differ, so
+    // their points are not joined.
+    std::set<std::string> sources;
+    for (const auto* r : ok) sources.insert(r->source);
     std::map<std::string, plots::Curve> curves;
     double lo = HUGE_VAL, hi = -HUGE_VAL;
     for (const auto* r : ok) {
@@ -135,21 +139,22 @@ std::vector<std::pair<std::string, std::string>> phase_4d_plots(const std::vecto
           label += (label.empty() ? "" : ", ") + column_name(k) + " = " + sweep::csv_cell(v);
       if (const std::string o = other_text(*r); !o.empty())
         label += (label.empty() ? "" : ", ") + o;
+      if (sources.size() > 1) label += " (" + r->source + ")";
       plots::Curve& c = curves[label];
       c.title = label;
-      c.style = plots::Curve::Style::ErrorLines;
+      c.style = plots::Curve::Style::IntervalLines;
       const double x = xit->second.get<double>();
       const auto& f = r->slice.fit;
-      // Error bar: half the 95 % interval (the rows carry one symmetric error).
-      c.rows.push_back({x, f.x_c, 0.5 * (f.x_c_hi - f.x_c_lo)});
+      c.rows.push_back({x, f.x_c, f.x_c_lo, f.x_c_hi});  // the bar: the 95 % interval
       lo = std::min(lo, x);
       hi = std::max(hi, x);
     }
     plots::Panel p;
     p.title = "critical " + column_name(axis) + " against " + column_name(x_key);
     p.xlabel = column_name(x_key);
-    p.ylabel = column_name(axis) + "_c (bars: half the 95 % bootstrap interval)";
-    p.logx = lo > 0 && hi >= 100 * lo;
+    p.ylabel = column_name(axis) + "_c (bars: 95 % bootstrap interval)";
+    p.logx = lo > 0 && hi >= 10 * lo;
+    p.x_margins = true;
     p.logy = fitted_in_log(axis);
     p.key = "outside bottom center";
     for (auto& [label, c] : curves) {

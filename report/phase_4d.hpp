@@ -49,7 +49,8 @@ std::string phase_4d_csv(const std::vector<PhaseRow>& rows);
 
 // One gnuplot script per transition parameter with at least two fitted points ("phase4d_<name>"):
 // x_c against the other transition parameter that takes the most values among them (log scale
-// where it spans two decades), one curve with error bars per combination of the rest.
+// where it spans a decade), one curve with the 95 % intervals as bars per combination of the rest
+// (and per source, where the points come from several sweeps).
 std::vector<std::pair<std::string, std::string>> phase_4d_plots(const std::vector<PhaseRow>& rows);
 
 }  // namespace wirepack::report

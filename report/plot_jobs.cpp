@@ -48,9 +48,9 @@ namespace {
 
 // The fitted transition of a slice as a curve over its range, in x (200 points, log-spaced when
 // the fit is in log10 x); empty without a transition model.
-std::vector<std::array<double, 3>> model_rows(const CriticalSlice& slice) {
+std::vector<plots::Row> model_rows(const CriticalSlice& slice) {
   const analysis::CriticalResult& f = slice.fit;
-  std::vector<std::array<double, 3>> rows;
+  std::vector<plots::Row> rows;
   if (f.model.empty() || !std::isfinite(f.x_min) || !std::isfinite(f.x_max)) return rows;
   const bool log_x = slice.options.log_x;
   const double u0 = log_x ? std::log10(f.x_min) : f.x_min;
@@ -59,7 +59,7 @@ std::vector<std::array<double, 3>> model_rows(const CriticalSlice& slice) {
     const double u = u0 + (u1 - u0) * k / 200;
     const double D = f.model == "continuous" ? analysis::continuous_model(u, f.continuous)
                                              : analysis::smooth_model(u, f.smooth);
-    rows.push_back({log_x ? std::pow(10.0, u) : u, D, NaN});
+    rows.push_back({log_x ? std::pow(10.0, u) : u, D, NaN, NaN});
   }
   return rows;
 }
@@ -131,7 +131,7 @@ std::optional<PlotJob> view_plot(const Analysis& a, const View& v,
   const CriticalSlice* slice = nullptr;
   for (const auto& s : slices)
     if (v.others.empty() && s.axis == v.pointer && s.at.empty()) slice = &s;
-  const auto model = slice ? model_rows(*slice) : std::vector<std::array<double, 3>>{};
+  const auto model = slice ? model_rows(*slice) : std::vector<plots::Row>{};
   if (!model.empty() && std::isfinite(slice->fit.x_c)) {
     const analysis::CriticalResult& f = slice->fit;
     // 3 significant digits: a key entry wider than the panel hides the whole key.

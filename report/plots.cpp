@@ -40,12 +40,18 @@ std::string quoted(const std::string& s) {
 }
 
 // Rows a panel can draw: finite x and y, positive where the axis is logarithmic.
-std::vector<std::array<double, 3>> drawable(const Panel& p, const Curve& c) {
-  std::vector<std::array<double, 3>> rows;
+std::vector<Row> drawable(const Panel& p, const Curve& c) {
+  std::vector<Row> rows;
   for (const auto& r : c.rows) {
     if (!std::isfinite(r[0]) || !std::isfinite(r[1])) continue;
     if ((p.logx && r[0] <= 0) || (p.logy && r[1] <= 0)) continue;
-    rows.push_back({r[0], r[1], std::isfinite(r[2]) ? r[2] : 0.0});
+    if (c.style == Curve::Style::IntervalLines) {
+      // A bar with an end that is not finite (or not positive on a log axis) is drawn as none.
+      const auto end = [&](double v) { return std::isfinite(v) && !(p.logy && v <= 0) ? v : r[1]; };
+      rows.push_back({r[0], r[1], end(r[2]), end(r[3])});
+    } else {
+      rows.push_back({r[0], r[1], std::isfinite(r[2]) ? r[2] : 0.0, 0.0});
+    }
   }
   return rows;
 }
@@ -54,6 +60,8 @@ std::string style_text(Curve::Style s) {
   switch (s) {
     case Curve::Style::ErrorLines:
       return "using 1:2:3 with yerrorlines pointtype 7 pointsize 0.8";
+    case Curve::Style::IntervalLines:
+      return "using 1:2:3:4 with yerrorlines pointtype 7 pointsize 0.8";
     case Curve::Style::Points:
       return "using 1:2 with points pointtype 7 pointsize 0.5";
     case Curve::Style::Lines:
@@ -97,9 +105,12 @@ std::string script(const std::string& comment, const std::string& page_title,
   for (std::size_t p = 0; p < panels.size(); ++p) {
     for (std::size_t c = 0; c < panels[p].curves.size(); ++c) {
       s << "$d" << p << "_" << c << " << EOD\n";
-      for (const auto& r : drawable(panels[p], panels[p].curves[c]))
-        s << format_number(r[0]) << ' ' << format_number(r[1]) << ' ' << format_number(r[2])
-          << '\n';
+      const bool four = panels[p].curves[c].style == Curve::Style::IntervalLines;
+      for (const auto& r : drawable(panels[p], panels[p].curves[c])) {
+        s << format_number(r[0]) << ' ' << format_number(r[1]) << ' ' << format_number(r[2]);
+        if (four) s << ' ' << format_number(r[3]);
+        s << '\n';
+      }
       s << "EOD\n";
     }
   }
@@ -158,6 +169,8 @@ std::string script(const std::string& comment, const std::string& page_title,
     // Margins inside the frame, so points at the ends of the range stay visible.
     if (panel.y_from_zero)
       s << "set yrange [0:*]\nset offsets graph 0.03, graph 0.03, graph 0.05, 0\n";
+    else if (panel.x_margins)
+      s << "set offsets graph 0.05, graph 0.05, 0, 0\n";
     if (panel.equal_axes) s << "set size ratio -1\n";
     s << "plot ";
     for (std::size_t k = 0; k < drawn.size(); ++k) {

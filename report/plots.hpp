@@ -9,24 +9,29 @@
 
 namespace wirepack::report::plots {
 
+// One row of a curve: x, y and one or two more columns (see Curve::Style); the unused are 0.
+using Row = std::array<double, 4>;
+
 // One data set of a panel.
 struct Curve {
   enum class Style {
-    ErrorLines,  // rows (x, y, y error): points joined by lines, with error bars
-    Points,      // rows (x, y, -)
-    Lines,       // rows (x, y, -)
-    Boxes,       // rows (x centre, y, box width): a histogram
-    Dots,        // rows (x, y, -): small grey points (a shell's vertices under a packing)
+    ErrorLines,     // rows (x, y, y error): points joined by lines, with error bars
+    IntervalLines,  // rows (x, y, y low, y high): points joined by lines, bars from low to high
+    Points,         // rows (x, y, -)
+    Lines,          // rows (x, y, -)
+    Boxes,          // rows (x centre, y, box width): a histogram
+    Dots,           // rows (x, y, -): small grey points (a shell's vertices under a packing)
   };
   std::string title;  // key entry ("" = none)
   Style style = Style::Points;
-  std::vector<std::array<double, 3>> rows;  // rows with a non-finite x or y are left out
+  std::vector<Row> rows;  // rows with a non-finite x or y are left out
 };
 
 struct Panel {
   std::string title, xlabel, ylabel;
   bool logx = false, logy = false;
   bool y_from_zero = false;      // y range starts at 0
+  bool x_margins = false;        // a margin at both ends of x, so points there stay visible
   bool equal_axes = false;       // one unit is as long on x as on y (pictures of packings)
   std::string key = "top left";  // where the key goes (gnuplot `set key` position)
   std::vector<Curve> curves;

@@ -111,6 +111,60 @@ TEST(Phase4d, PictureIsMuCAgainstEpsOneCurvePerXi) {
     EXPECT_NE(g.find(label), std::string::npos) << label;
 }
 
+// The bars are the 95 % intervals themselves (asymmetric; they were half their width about x_c):
+// every data row of the picture is (eps, x_c, x_c_lo, x_c_hi) of one fitted row, and xi's
+// decade (10 to 100) is drawn on a log axis.
+TEST(Phase4d, PictureBarsAreTheIntervals) {
+  const auto rows = phase_rows(sources());
+  const auto plots = phase_4d_plots(rows);
+  ASSERT_FALSE(plots.empty());
+  const std::string& g = plots.front().second;
+  EXPECT_NE(g.find("using 1:2:3:4 with yerrorlines"), std::string::npos);
+  std::istringstream in(g);
+  int data = 0;
+  for (std::string line; std::getline(in, line);) {
+    std::istringstream cells(line);
+    double x, y, lo, hi;
+    if (!(cells >> x >> y >> lo >> hi)) continue;
+    ++data;
+    bool found = false;
+    for (const auto& r : rows) {
+      const auto& f = r.slice.fit;
+      const auto eps = r.at.find("/eps");
+      if (r.axis != "/mu_s" || f.status != "ok" || eps == r.at.end()) continue;
+      // format_number keeps 10 significant digits.
+      const auto same = [](double a, double b) { return std::abs(a - b) <= 1e-9 * std::abs(b); };
+      found = found || (same(x, eps->second.get<double>()) && same(y, f.x_c) &&
+                        same(lo, f.x_c_lo) && same(hi, f.x_c_hi));
+    }
+    EXPECT_TRUE(found) << line;
+    EXPECT_LE(lo, y);
+    EXPECT_GE(hi, y);
+  }
+  EXPECT_EQ(data, 8);  // the 8 fitted mu_s slices: 3 of a, 4 of b, 1 of c
+  // Two points a decade apart in xi alone: a log x axis.
+  std::vector<PhaseSource> two = {sources()[0], sources()[2]};
+  two[0].points = sweep_points({1000}, 10, 5);
+  two[0].axes = {"/mu_s"};
+  const auto xi_plots = phase_4d_plots(phase_rows(two));
+  ASSERT_EQ(xi_plots.size(), 1u);
+  EXPECT_NE(xi_plots[0].second.find("critical mu_s against xi"), std::string::npos);
+  EXPECT_NE(xi_plots[0].second.find("set logscale x"), std::string::npos);
+}
+
+// Points of two sweeps at the same parameters (e.g. one protocol at l <= 30, another at l <= 50)
+// are two curves named by their source, not one curve through both.
+TEST(Phase4d, TwoSourcesAreTwoCurves) {
+  std::vector<PhaseSource> two = {sources()[0], sources()[0]};
+  two[1].name = "a_long";
+  two[1].points = sweep_points({10, 100, 1000}, 10, 6);
+  const auto plots = phase_4d_plots(phase_rows(two));
+  ASSERT_FALSE(plots.empty());
+  const std::string& g = plots.front().second;
+  EXPECT_NE(g.find("rho = 20, xi = 10 (a)"), std::string::npos) << g;
+  EXPECT_NE(g.find("rho = 20, xi = 10 (a_long)"), std::string::npos) << g;
+}
+
 TEST(Phase4d, NoPictureFromOnePoint) {
   std::vector<PhaseSource> one = {sources()[2]};
   const auto rows = phase_rows(one);
