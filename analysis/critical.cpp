@@ -366,6 +366,24 @@ CriticalResult fit_critical(const std::vector<CriticalSample>& samples,
   r.status = "ok";
   r.note = smooth ? "smooth crossover preferred by AIC (no exponent)"
                   : "continuous transition preferred by AIC";
+  if (smooth) {
+    // A crossover no grid value sees (none within u_c -+ 2 w): the data place x_c only between
+    // the two grid values around it, wherever the logistic's midpoint fell, and the bootstrap
+    // over the seeds cannot know that; the interval covers that whole step of the grid.
+    bool seen = false;
+    for (double u : d.u) seen = seen || std::abs(u - u_c) <= 2 * r.smooth.w;
+    if (!seen) {
+      const auto above_it = std::upper_bound(d.u.begin(), d.u.end(), u_c);
+      const double a = to_x(*(above_it - 1)), b = to_x(*above_it);  // u_c is inside the range
+      r.x_c_lo = std::min(r.x_c_lo, a);
+      r.x_c_hi = std::max(r.x_c_hi, b);
+      r.note +=
+          "; the crossover is sharper than the grid (no grid value within x_c -+ 2 width): "
+          "x_c lies between the grid values " +
+          fmt(a) + " and " + fmt(b) +
+          ", the interval is widened to them; values between them resolve it";
+    }
+  }
   return r;
 }
 

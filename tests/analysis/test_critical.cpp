@@ -351,5 +351,37 @@ TEST(Critical, FiveSeedsAValueFindAndCoverTheTransitionFarMoreOftenThanTwo) {
   EXPECT_GE(cover5 - cover2, 0.05);
 }
 
+// A jump between two adjacent grid values (coil at x <= 0.4, crumpled at x >= 0.5, nothing in
+// between: a coarse grid over a sharp transition) puts the logistic's midpoint anywhere between
+// them; a bootstrap over two nearly equal seeds then gives an interval far narrower than what the
+// data know (the coarse phase-diagram sweep: 0.211 [0.210, 0.215] between grid values 0.2 and
+// 0.3). The interval must be the whole gap, and say why; a crossover a grid value sees (the
+// sigmoid of PrefersTheSmoothModelOnASigmoid, width 0.08 on a 0.1 grid) keeps its bootstrap one.
+TEST(Critical, ACrossoverSharperThanTheGridGetsTheWholeGap) {
+  const auto jump = [](double x) { return x < 0.437 ? 0.1 : 0.7; };
+  std::mt19937_64 rng(12);
+  int ok = 0, covered = 0;
+  for (int k = 0; k < 50; ++k) {
+    const auto r = fit_critical(simulate(linspace(0, 0.6, 7), jump, 0.01, rng, 2), fast_options());
+    if (r.status != "ok") continue;
+    ++ok;
+    covered += r.x_c_lo <= 0.437 && 0.437 <= r.x_c_hi;
+    EXPECT_LE(r.x_c_lo, 0.4 + 1e-12) << r.note;
+    EXPECT_GE(r.x_c_hi, 0.5 - 1e-12) << r.note;
+    EXPECT_NE(r.note.find("sharper than the grid"), std::string::npos) << r.note;
+  }
+  std::printf("  jump between grid values: %d of 50 fits ok, %d cover x_c\n", ok, covered);
+  EXPECT_GE(ok, 40);
+  EXPECT_EQ(covered, ok);
+
+  std::mt19937_64 rng2(2);
+  const auto sigmoid = [](double x) { return 0.1 + 0.5 / (1 + std::exp(-(x - 0.5) / 0.08)); };
+  const CriticalResult r =
+      fit_critical(simulate(linspace(0, 1, 11), sigmoid, kNoise, rng2), fast_options());
+  ASSERT_EQ(r.status, "ok") << r.note;
+  EXPECT_EQ(r.note.find("sharper than the grid"), std::string::npos) << r.note;
+  EXPECT_LT(r.x_c_hi - r.x_c_lo, 0.1);
+}
+
 }  // namespace
 }  // namespace wirepack::analysis
