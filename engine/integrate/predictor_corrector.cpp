@@ -69,11 +69,12 @@ double PredictorCorrector::step(State& s, const EvaluateFn& eval, const Position
     double da = 0.0;
     bool finite = true;
     Where peak;  // the DOF where |a' - a| peaks (named in a collapse message)
-    for (int i = 0; i < s.n_free; ++i) {
-      const double d = (a_new_[i] - a_[i]).norm();
-      finite = finite && std::isfinite(d);
-      if (d > da) da = d, peak = {"wire node", i};
+    for (int i = 0; i < s.n_free; ++i) {  // squared: one square root after the loop
+      const double d2 = (a_new_[i] - a_[i]).squaredNorm();
+      finite = finite && std::isfinite(d2);
+      if (d2 > da) da = d2, peak = {"wire node", i};
     }
+    da = std::sqrt(da);
     for (int j = 0; j < ne; ++j) {
       const double d = r_ * std::abs(alpha_new_[j] - alpha_[j]);
       finite = finite && std::isfinite(d);
