@@ -1,6 +1,8 @@
 #include "report/phase_4d.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <map>
 #include <set>
 
 #include "report/csv_table.hpp"
@@ -157,8 +159,25 @@ std::vector<std::pair<std::string, std::string>> phase_4d_plots(const std::vecto
     p.x_margins = true;
     p.logy = fitted_in_log(axis);
     p.key = "outside bottom center";
+    // Curves that share an x value would hide each other's bars: where any do, curve k of n is
+    // drawn shifted by (k - (n - 1) / 2) steps, all of them within 8 % of the x span (of its
+    // decades on a log axis); the data keep their x.
+    std::map<double, int> curves_at;
+    for (auto& [label, c] : curves) {
+      std::set<double> xs;
+      for (const auto& r : c.rows) xs.insert(r[0]);
+      for (const double x : xs) ++curves_at[x];
+    }
+    const bool shared =
+        std::any_of(curves_at.begin(), curves_at.end(), [](const auto& e) { return e.second > 1; });
+    const double span = p.logx ? std::log10(hi / lo) : hi - lo;
+    const double n = static_cast<double>(curves.size());
+    const double step = span * std::min(0.02, 0.08 / std::max(1.0, n - 1));
+    double k = 0;
     for (auto& [label, c] : curves) {
       std::sort(c.rows.begin(), c.rows.end());
+      if (shared) c.x_offset = (k - (n - 1) / 2) * step;
+      k += 1;
       p.curves.push_back(std::move(c));
     }
     const std::string name = "phase4d_" + column_name(axis);

@@ -56,6 +56,13 @@ std::vector<Row> drawable(const Panel& p, const Curve& c) {
   return rows;
 }
 
+// The `using` x column: column 1, or column 1 shifted by the curve's x_offset.
+std::string x_column(const Panel& p, const Curve& c) {
+  if (c.x_offset == 0) return "1";
+  return p.logx ? "($1*10**(" + format_number(c.x_offset) + "))"
+                : "($1+(" + format_number(c.x_offset) + "))";
+}
+
 std::string style_text(Curve::Style s) {
   switch (s) {
     case Curve::Style::ErrorLines:
@@ -175,8 +182,11 @@ std::string script(const std::string& comment, const std::string& page_title,
     s << "plot ";
     for (std::size_t k = 0; k < drawn.size(); ++k) {
       const Curve& c = panel.curves[drawn[k]];
-      s << (k ? ", \\\n     " : "") << "$d" << p << "_" << drawn[k] << ' ' << style_text(c.style)
-        << ' ' << (c.title.empty() ? "notitle" : "title " + quoted(c.title));
+      std::string style = style_text(c.style);
+      if (const std::string x = x_column(panel, c); x != "1")
+        style.replace(style.find("using 1:") + 6, 1, x);
+      s << (k ? ", \\\n     " : "") << "$d" << p << "_" << drawn[k] << ' ' << style << ' '
+        << (c.title.empty() ? "notitle" : "title " + quoted(c.title));
     }
     s << '\n';
   }

@@ -25,6 +25,9 @@ struct Curve {
   std::string title;  // key entry ("" = none)
   Style style = Style::Points;
   std::vector<Row> rows;  // rows with a non-finite x or y are left out
+  // Drawn at x * 10^x_offset on a log x axis, x + x_offset on a linear one; the datablock keeps
+  // x as it is. Lets curves that share x values sit side by side.
+  double x_offset = 0;
 };
 
 struct Panel {

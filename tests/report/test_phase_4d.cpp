@@ -119,7 +119,7 @@ TEST(Phase4d, PictureBarsAreTheIntervals) {
   const auto plots = phase_4d_plots(rows);
   ASSERT_FALSE(plots.empty());
   const std::string& g = plots.front().second;
-  EXPECT_NE(g.find("using 1:2:3:4 with yerrorlines"), std::string::npos);
+  EXPECT_NE(g.find(":2:3:4 with yerrorlines"), std::string::npos);
   std::istringstream in(g);
   int data = 0;
   for (std::string line; std::getline(in, line);) {
@@ -163,6 +163,29 @@ TEST(Phase4d, TwoSourcesAreTwoCurves) {
   const std::string& g = plots.front().second;
   EXPECT_NE(g.find("rho = 20, xi = 10 (a)"), std::string::npos) << g;
   EXPECT_NE(g.find("rho = 20, xi = 10 (a_long)"), std::string::npos) << g;
+  // They share every eps, so they are drawn side by side: shifted by opposite fractions of a
+  // decade (eps is on a log axis), within 8 % of its two decades, while the data keep eps.
+  std::vector<double> offsets;
+  for (std::size_t at = g.find("using ($1*10**("); at != std::string::npos;
+       at = g.find("using ($1*10**(", at + 1))
+    offsets.push_back(std::stod(g.substr(at + 15)));
+  ASSERT_EQ(offsets.size(), 2u) << g;
+  EXPECT_DOUBLE_EQ(offsets[0], -offsets[1]);
+  EXPECT_GT(std::abs(offsets[0]), 0.0);
+  EXPECT_LE(std::abs(offsets[0] - offsets[1]), 0.08 * 2 + 1e-12);
+  EXPECT_NE(g.find("\n10 "), std::string::npos) << g;  // the datablock's eps is 10, as run
+}
+
+// Curves at different x values are not shifted.
+TEST(Phase4d, CurvesThatShareNoXAreDrawnWhereTheyAre) {
+  std::vector<PhaseSource> two = {sources()[0], sources()[0]};
+  two[1].name = "a_shifted";
+  two[1].points = sweep_points({20, 200, 2000}, 10, 7);
+  const auto plots = phase_4d_plots(phase_rows(two));
+  ASSERT_FALSE(plots.empty());
+  const std::string& g = plots.front().second;
+  EXPECT_EQ(g.find("$1"), std::string::npos) << g;
+  EXPECT_NE(g.find("using 1:2:3:4 with yerrorlines"), std::string::npos) << g;
 }
 
 TEST(Phase4d, NoPictureFromOnePoint) {
