@@ -63,20 +63,22 @@ std::string x_column(const Panel& p, const Curve& c) {
                 : "($1+(" + format_number(c.x_offset) + "))";
 }
 
-std::string style_text(Curve::Style s) {
+// The plot clause of a curve whose x column is `x` (see x_column).
+std::string style_text(Curve::Style s, const std::string& x) {
+  const std::string u = "using " + x + ":";
   switch (s) {
     case Curve::Style::ErrorLines:
-      return "using 1:2:3 with yerrorlines pointtype 7 pointsize 0.8";
+      return u + "2:3 with yerrorlines pointtype 7 pointsize 0.8";
     case Curve::Style::IntervalLines:
-      return "using 1:2:3:4 with yerrorlines pointtype 7 pointsize 0.8";
+      return u + "2:3:4 with yerrorlines pointtype 7 pointsize 0.8";
     case Curve::Style::Points:
-      return "using 1:2 with points pointtype 7 pointsize 0.5";
+      return u + "2 with points pointtype 7 pointsize 0.5";
     case Curve::Style::Lines:
-      return "using 1:2 with lines linewidth 2";
+      return u + "2 with lines linewidth 2";
     case Curve::Style::Boxes:
-      return "using 1:2:3 with boxes fill solid 0.3 border";
+      return u + "2:3 with boxes fill solid 0.3 border";
     case Curve::Style::Dots:
-      return "using 1:2 with points pointtype 7 pointsize 0.25 linecolor rgb \"#b8b8b8\"";
+      return u + "2 with points pointtype 7 pointsize 0.25 linecolor rgb \"#b8b8b8\"";
   }
   return "";
 }
@@ -182,9 +184,7 @@ std::string script(const std::string& comment, const std::string& page_title,
     s << "plot ";
     for (std::size_t k = 0; k < drawn.size(); ++k) {
       const Curve& c = panel.curves[drawn[k]];
-      std::string style = style_text(c.style);
-      if (const std::string x = x_column(panel, c); x != "1")
-        style.replace(style.find("using 1:") + 6, 1, x);
+      const std::string style = style_text(c.style, x_column(panel, c));
       s << (k ? ", \\\n     " : "") << "$d" << p << "_" << drawn[k] << ' ' << style << ' '
         << (c.title.empty() ? "notitle" : "title " + quoted(c.title));
     }

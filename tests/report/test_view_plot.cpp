@@ -224,6 +224,24 @@ TEST(ViewPlot, TickStepLeavesAtMostTheIntervalsAsked) {
   }
 }
 
+// A curve's x offset goes into its `using` x column in the form of its axis: a factor
+// 10^offset on a log axis (a shift of `offset` decades), a sum on a linear one; a curve without
+// an offset keeps column 1; the columns after x stay those of its style.
+TEST(ViewPlot, XOffsetIsAFactorOnALogAxisAndASumOnALinearOne) {
+  for (const bool logx : {true, false}) {
+    plots::Panel p;
+    p.logx = logx;
+    plots::Curve shifted{"a", plots::Curve::Style::IntervalLines, {{{1, 2, 1.5, 2.5}}}, -0.25};
+    plots::Curve plain{"b", plots::Curve::Style::Points, {{{1, 3, 0, 0}}}, 0};
+    p.curves = {shifted, plain};
+    const std::string gp = plots::script("", "t", {p}, 1, 1, "x.png", 400, 300);
+    const std::string want = logx ? "using ($1*10**(-0.25)):2:3:4 with yerrorlines"
+                                  : "using ($1+(-0.25)):2:3:4 with yerrorlines";
+    EXPECT_NE(gp.find(want), std::string::npos) << gp;
+    EXPECT_NE(gp.find("using 1:2 with points"), std::string::npos) << gp;
+  }
+}
+
 TEST(ViewPlot, LiteralDAloneWithoutTheOrderParameterOrAFit) {
   TempDir dir;
   // Only mu_s <= 0.2: the coil, no transition in range.
