@@ -163,6 +163,7 @@ struct SweepArgs {
   int threads = 0;    // 0 = all cores
   std::string shard;  // "K/N"; "" = from SLURM_ARRAY_TASK_* or 0/1
   bool retry_failed = false;
+  std::vector<std::string> only;                      // --only KEY=V1,V2,... (each a RunCondition)
   double checkpoint_every = kDefaultCheckpointEvery;  // [s]
 };
 
@@ -179,6 +180,7 @@ int cmd_sweep(const SweepArgs& a) {
   opt.threads = a.threads;
   opt.shard = shard;
   opt.retry_failed = a.retry_failed;
+  for (const auto& c : a.only) opt.only.push_back(parse_run_condition(sweep, c, "--only"));
   opt.checkpoint_every_s = a.checkpoint_every;
   opt.progress = &std::cerr;
   opt.stop = &g_stop;
@@ -398,6 +400,12 @@ int main(int argc, char** argv) {
                     "from SLURM_ARRAY_TASK_ID and SLURM_ARRAY_TASK_COUNT, else 0/1)");
   sweep->add_flag("--retry-failed", sweep_args.retry_failed,
                   "run again the runs whose file says failed (kept otherwise)");
+  sweep
+      ->add_option("--only", sweep_args.only,
+                   "KEY=V1,V2,...: run only the runs whose grid axis KEY (or seed) has one of "
+                   "these values; repeat for several axes (all must hold). The manifest still "
+                   "lists every run; the others stay pending for a later invocation")
+      ->allow_extra_args(false);
   sweep->add_option("--checkpoint-every", sweep_args.checkpoint_every, checkpoint_help)
       ->check(CLI::Range(0.0, 1e9));
 

@@ -295,7 +295,76 @@ void execute(SweepState& st, ManifestEntry& e, const SweepOptions& opt) noexcept
   }
 }
 
+// A value of a run condition: a number where the text reads as one, else the text.
+nlohmann::json condition_value(const std::string& text) {
+  try {
+    std::size_t used = 0;
+    const double v = std::stod(text, &used);
+    if (used == text.size() && std::isfinite(v)) return v;
+  } catch (const std::exception&) {
+  }
+  return text;
+}
+
+bool same_value(const nlohmann::json& a, const nlohmann::json& b) {
+  if (a.is_number() && b.is_number()) {
+    const double x = a.get<double>(), y = b.get<double>();
+    return std::abs(x - y) <= 1e-12 * std::max(std::abs(x), std::abs(y));
+  }
+  return a == b;
+}
+
+// The run's value of a condition's key: its seed, or its point's value of that axis.
+nlohmann::json run_value(const SweepRun& run, const std::string& key) {
+  if (key == "seed") return run.seed;
+  const auto it = run.point_values.find(key);
+  return it == run.point_values.end() ? nlohmann::json() : *it;
+}
+
 }  // namespace
+
+RunCondition parse_run_condition(const Sweep& sweep, const std::string& text,
+                                 const std::string& what) {
+  const auto eq = text.find('=');
+  const std::string head = what + " " + text + ": ";
+  if (eq == std::string::npos || eq == 0 || eq + 1 == text.size())
+    throw InputError(head + "must be KEY=V1,V2,... (e.g. eps=1e4 or mu_s=0.1,0.2)");
+  RunCondition c{text.substr(0, eq), {}};
+  std::string axes;
+  bool known = c.key == "seed";
+  for (const auto& a : sweep.axes) {
+    const std::string k = a.key;
+    axes += (axes.empty() ? "" : ", ") + k;
+    known = known || k == c.key;
+  }
+  if (!known)
+    throw InputError(head + "\"" + c.key + "\" is not an axis of sweep " + sweep.name +
+                     " (axes: " + (axes.empty() ? "none" : axes) + "; or seed)");
+  std::size_t from = eq + 1;
+  while (from <= text.size()) {
+    const auto comma = std::min(text.find(',', from), text.size());
+    const std::string v = text.substr(from, comma - from);
+    if (v.empty()) throw InputError(head + "an empty value");
+    c.values.push_back(condition_value(v));
+    const bool some = std::any_of(sweep.runs.begin(), sweep.runs.end(), [&](const SweepRun& r) {
+      return same_value(run_value(r, c.key), c.values.back());
+    });
+    if (!some)
+      throw InputError(head + "no run of sweep " + sweep.name + " has " + c.key + " = " + v);
+    from = comma + 1;
+  }
+  return c;
+}
+
+bool meets(const SweepRun& run, const std::vector<RunCondition>& only) {
+  for (const auto& c : only) {
+    const nlohmann::json v = run_value(run, c.key);
+    if (std::none_of(c.values.begin(), c.values.end(),
+                     [&](const nlohmann::json& w) { return same_value(v, w); }))
+      return false;
+  }
+  return true;
+}
 
 SweepOutcome run_sweep(const Sweep& sweep, const SweepOptions& opt) {
   SweepOutcome out;
@@ -311,7 +380,12 @@ SweepOutcome run_sweep(const Sweep& sweep, const SweepOptions& opt) {
   remove_checkpoint_temporaries(opt.dir, st.entries);
   std::vector<ManifestEntry*> todo;
   for (auto& e : st.entries)
-    if (inspect(st, e, opt.retry_failed, out)) todo.push_back(&e);
+    if (inspect(st, e, opt.retry_failed, out)) {
+      if (meets(*e.run, opt.only))
+        todo.push_back(&e);
+      else
+        ++out.left_out;
+    }
   // Longest expected first; ties in run order (stable sort of run-ordered entries).
   std::stable_sort(todo.begin(), todo.end(), [](const ManifestEntry* a, const ManifestEntry* b) {
     return a->run->cost > b->run->cost;
@@ -369,6 +443,8 @@ SweepOutcome run_sweep(const Sweep& sweep, const SweepOptions& opt) {
     else
       line += "; running " + std::to_string(todo.size()) + " on " + std::to_string(st.threads) +
               " thread" + (st.threads == 1 ? "" : "s") + " into " + opt.dir;
+    if (out.left_out > 0)
+      line += " (" + std::to_string(out.left_out) + " more to do, left out by --only)";
     *opt.progress << line << std::endl;
   }
 
