@@ -159,25 +159,28 @@ std::vector<std::pair<std::string, std::string>> phase_4d_plots(const std::vecto
     p.x_margins = true;
     p.logy = fitted_in_log(axis);
     p.key = "outside bottom center";
-    // Curves that share an x value would hide each other's bars: where any do, curve k of n is
-    // drawn shifted by (k - (n - 1) / 2) steps, all of them within 8 % of the x span (of its
-    // decades on a log axis); the data keep their x.
+    // Curves that share an x value would hide each other's bars: the n curves that share one
+    // with another are drawn shifted, the k-th of them by (k - (n - 1) / 2) steps, all within
+    // 8 % of the x span (of its decades on a log axis); the data keep their x, and a curve that
+    // shares none stays where it is.
     std::map<double, int> curves_at;
     for (auto& [label, c] : curves) {
       std::set<double> xs;
       for (const auto& r : c.rows) xs.insert(r[0]);
       for (const double x : xs) ++curves_at[x];
     }
-    const bool shared =
-        std::any_of(curves_at.begin(), curves_at.end(), [](const auto& e) { return e.second > 1; });
+    const auto shares = [&](const plots::Curve& c) {
+      return std::any_of(c.rows.begin(), c.rows.end(),
+                         [&](const plots::Row& r) { return curves_at[r[0]] > 1; });
+    };
+    double n = 0;
+    for (const auto& [label, c] : curves) n += shares(c);
     const double span = p.logx ? std::log10(hi / lo) : hi - lo;
-    const double n = static_cast<double>(curves.size());
     const double step = span * std::min(0.02, 0.08 / std::max(1.0, n - 1));
     double k = 0;
     for (auto& [label, c] : curves) {
       std::sort(c.rows.begin(), c.rows.end());
-      if (shared) c.x_offset = (k - (n - 1) / 2) * step;
-      k += 1;
+      if (shares(c)) c.x_offset = (k++ - (n - 1) / 2) * step;
       p.curves.push_back(std::move(c));
     }
     const std::string name = "phase4d_" + column_name(axis);

@@ -188,6 +188,29 @@ TEST(Phase4d, CurvesThatShareNoXAreDrawnWhereTheyAre) {
   EXPECT_NE(g.find("using 1:2:3:4 with yerrorlines"), std::string::npos) << g;
 }
 
+// Of three curves, two share their x values and one shares none: the two are drawn side by side,
+// the third where it is.
+TEST(Phase4d, OnlyCurvesThatShareAnXAreShifted) {
+  std::vector<PhaseSource> three = {sources()[0], sources()[0], sources()[0]};
+  three[1].name = "a_long";
+  three[1].points = sweep_points({10, 100, 1000}, 10, 6);
+  three[2].name = "a_apart";
+  three[2].points = sweep_points({20, 200, 2000}, 10, 7);
+  const auto plots = phase_4d_plots(phase_rows(three));
+  ASSERT_FALSE(plots.empty());
+  const std::string& g = plots.front().second;
+  std::size_t shifted = 0;
+  for (std::size_t at = g.find("using ($1*10**("); at != std::string::npos;
+       at = g.find("using ($1*10**(", at + 1))
+    ++shifted;
+  EXPECT_EQ(shifted, 2u) << g;
+  // The plot clause of the curve apart is its own, unshifted.
+  const std::size_t apart = g.find("title \"rho = 20, xi = 10 (a_apart)\"");
+  ASSERT_NE(apart, std::string::npos) << g;
+  const std::size_t clause = g.rfind("using ", apart);
+  EXPECT_EQ(g.compare(clause, 12, "using 1:2:3:"), 0) << g.substr(clause, apart - clause);
+}
+
 TEST(Phase4d, NoPictureFromOnePoint) {
   std::vector<PhaseSource> one = {sources()[2]};
   const auto rows = phase_rows(one);
