@@ -19,6 +19,9 @@ EOD
 $d0_2 << EOD
 10 0.21149433904247464 0.2 0.3
 EOD
+$d0_3 << EOD
+10 0.1062624664996211 0.09727919467364245 0.12005571726059566
+EOD
 reset
 set grid
 set key outside bottom center
@@ -27,7 +30,8 @@ set xlabel "xi"
 set ylabel "mu_s_c (bars: 95 % bootstrap interval)"
 set logscale x
 set offsets graph 0.05, graph 0.05, 0, 0
-plot $d0_0 using ($1*10**(-0.02)):2:3:4 with yerrorlines pointtype 7 pointsize 0.8 title "eps = 100, rho = 20 (results/phase_diagram/runs/coarse)", \
-     $d0_1 using 1:2:3:4 with yerrorlines pointtype 7 pointsize 0.8 title "eps = 1000, rho = 20 (results/paper/fig5b/sweep)", \
-     $d0_2 using ($1*10**(0.02)):2:3:4 with yerrorlines pointtype 7 pointsize 0.8 title "eps = 1000, rho = 20 (results/phase_diagram/runs/coarse)"
+plot $d0_0 using 1:2:3:4 with yerrorlines pointtype 7 pointsize 0.8 title "eps = 100, rho = 20 (results/phase_diagram/runs/coarse)", \
+     $d0_1 using ($1*10**(-0.02)):2:3:4 with yerrorlines pointtype 7 pointsize 0.8 title "eps = 1000, rho = 20 (results/paper/fig5b/sweep)", \
+     $d0_2 using 1:2:3:4 with yerrorlines pointtype 7 pointsize 0.8 title "eps = 1000, rho = 20 (results/phase_diagram/runs/coarse)", \
+     $d0_3 using ($1*10**(0.02)):2:3:4 with yerrorlines pointtype 7 pointsize 0.8 title "eps = 1000, rho = 20 (results/phase_diagram/runs/neo_hookean)"
 set output
