@@ -8,6 +8,7 @@
 #include "sweep/config/json_file.hpp"
 #include "sweep/errors.hpp"
 #include "sweep/format.hpp"
+#include "sweep/parse_number.hpp"
 #include "sweep/running/sweep_manifest.hpp"
 
 namespace wirepack::report {
@@ -74,14 +75,7 @@ bool is_exponent(const std::string& name) {
   return false;
 }
 
-// Parses the whole of `text` as a finite double.
-std::optional<double> to_double(const std::string& text) {
-  if (text.empty()) return {};
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if (end != text.c_str() + text.size() || !std::isfinite(v)) return {};
-  return v;
-}
+using sweep::to_double;
 
 }  // namespace
 

@@ -18,6 +18,7 @@
 #include "sweep/atomic_file.hpp"
 #include "sweep/errors.hpp"
 #include "sweep/format.hpp"
+#include "sweep/parse_number.hpp"
 #include "sweep/runfile/run_checkpoint.hpp"
 #include "sweep/runfile/run_file.hpp"
 #include "sweep/running/run.hpp"
@@ -297,12 +298,7 @@ void execute(SweepState& st, ManifestEntry& e, const SweepOptions& opt) noexcept
 
 // A value of a run condition: a number where the text reads as one, else the text.
 nlohmann::json condition_value(const std::string& text) {
-  try {
-    std::size_t used = 0;
-    const double v = std::stod(text, &used);
-    if (used == text.size() && std::isfinite(v)) return v;
-  } catch (const std::exception&) {
-  }
+  if (const auto v = to_double(text)) return *v;
   return text;
 }
 

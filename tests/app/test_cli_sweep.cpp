@@ -143,7 +143,7 @@ TEST(CliSweep, CompleteSweepExit0FailedRunExit1) {
 }
 
 // --only runs a subset by axis values and seeds; the manifest keeps every run (the rest pending),
-// the runs are those of the whole sweep byte for byte, and later invocations run the rest. A
+// the runs are those of the whole sweep (the same wires), and later invocations run the rest. A
 // condition that cannot select (form, unknown axis, a value no run has) is bad input: exit 2,
 // nothing written.
 TEST(CliSweep, OnlyRunsTheSelectedRunsAndKeepsTheWholeManifest) {
