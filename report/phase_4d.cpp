@@ -132,6 +132,7 @@ std::vector<std::pair<std::string, std::string>> phase_4d_plots(const std::vecto
     for (const auto* r : ok) sources.insert(r->source);
     std::map<std::string, plots::Curve> curves;
     double lo = HUGE_VAL, hi = -HUGE_VAL;
+    std::set<double> grid_x;  // the x values of the points: the ticks, while there are few
     for (const auto* r : ok) {
       const auto xit = r->at.find(x_key);
       if (xit == r->at.end() || !xit->second.is_number()) continue;
@@ -148,6 +149,7 @@ std::vector<std::pair<std::string, std::string>> phase_4d_plots(const std::vecto
       const double x = xit->second.get<double>();
       const auto& f = r->slice.fit;
       c.rows.push_back({x, f.x_c, f.x_c_lo, f.x_c_hi});  // the bar: the 95 % interval
+      grid_x.insert(x);
       lo = std::min(lo, x);
       hi = std::max(hi, x);
     }
@@ -156,7 +158,8 @@ std::vector<std::pair<std::string, std::string>> phase_4d_plots(const std::vecto
     p.xlabel = column_name(x_key);
     p.ylabel = column_name(axis) + "_c (bars: 95 % bootstrap interval)";
     p.logx = lo > 0 && hi >= 10 * lo;
-    p.x_margins = true;
+    p.margins = true;
+    if (grid_x.size() <= 8) p.xtics.assign(grid_x.begin(), grid_x.end());
     p.logy = fitted_in_log(axis);
     p.key = "outside bottom center";
     // Curves that share an x value would hide each other's bars: the n curves that share one

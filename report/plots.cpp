@@ -157,6 +157,12 @@ std::string script(const std::string& comment, const std::string& page_title,
         if (step > 0) s << "set xtics " << format_number(step) << '\n';
       }
     }
+    if (!panel.xtics.empty()) {
+      s << "set xtics (";
+      for (std::size_t t = 0; t < panel.xtics.size(); ++t)
+        s << (t ? ", " : "") << format_number(panel.xtics[t]);
+      s << ")\n";
+    }
     for (std::size_t b = 0; b < panel.bands.size(); ++b)
       s << "set object " << ++objects << " rect from " << format_number(panel.bands[b][0])
         << ", graph 0 to " << format_number(panel.bands[b][1])
@@ -178,8 +184,8 @@ std::string script(const std::string& comment, const std::string& page_title,
     // Margins inside the frame, so points at the ends of the range stay visible.
     if (panel.y_from_zero)
       s << "set yrange [0:*]\nset offsets graph 0.03, graph 0.03, graph 0.05, 0\n";
-    else if (panel.x_margins)
-      s << "set offsets graph 0.05, graph 0.05, 0, 0\n";
+    else if (panel.margins)
+      s << "set autoscale fix\nset offsets graph 0.05, graph 0.05, graph 0.05, graph 0.05\n";
     if (panel.equal_axes) s << "set size ratio -1\n";
     s << "plot ";
     for (std::size_t k = 0; k < drawn.size(); ++k) {

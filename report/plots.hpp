@@ -33,8 +33,10 @@ struct Curve {
 struct Panel {
   std::string title, xlabel, ylabel;
   bool logx = false, logy = false;
-  bool y_from_zero = false;      // y range starts at 0
-  bool x_margins = false;        // a margin at both ends of x, so points there stay visible
+  bool y_from_zero = false;  // y range starts at 0
+  // A margin on every side and the ranges fitted to the data, not widened to the next tick (on a
+  // log axis gnuplot widens to whole decades), so points and bars at the ends clear the frame.
+  bool margins = false;
   bool equal_axes = false;       // one unit is as long on x as on y (pictures of packings)
   std::string key = "top left";  // where the key goes (gnuplot `set key` position)
   std::vector<Curve> curves;
@@ -43,6 +45,7 @@ struct Panel {
   // multiplot, so every panel of such a page is placed.
   std::optional<std::array<double, 4>> place;
   std::optional<std::array<double, 2>> xrange;  // x range drawn (empty: automatic)
+  std::vector<double> xtics;                    // major x ticks at these values (empty: gnuplot's)
   std::vector<double> vlines;                   // dashed vertical lines at these x
   std::vector<std::array<double, 2>> bands;     // shaded x intervals [lo, hi] behind the data
 };

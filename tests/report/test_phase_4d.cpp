@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "report/csv_rows.hpp"
+#include "report/plots.hpp"
 
 namespace wirepack::report {
 namespace {
@@ -209,6 +210,28 @@ TEST(Phase4d, OnlyCurvesThatShareAnXAreShifted) {
   ASSERT_NE(apart, std::string::npos) << g;
   const std::size_t clause = g.rfind("using ", apart);
   EXPECT_EQ(g.compare(clause, 12, "using 1:2:3:"), 0) << g.substr(clause, apart - clause);
+}
+
+// The axes are fitted to the points and their bars, with a margin on every side (gnuplot would
+// widen a log axis to whole decades, and a bar ending on a tick would touch the frame), and the
+// x ticks are the grid values, so that each point reads off its parameter.
+TEST(Phase4d, PictureIsFittedToItsDataWithTicksAtTheGridValues) {
+  std::vector<PhaseSource> one = {sources()[0]};
+  one[0].points = sweep_points({30, 100, 1000}, 10, 1);
+  const auto plots = phase_4d_plots(phase_rows(one));
+  ASSERT_EQ(plots.size(), 1u);
+  const std::string& g = plots.front().second;
+  EXPECT_NE(g.find("set autoscale fix\n"), std::string::npos) << g;
+  EXPECT_NE(g.find("set offsets graph 0.05, graph 0.05, graph 0.05, graph 0.05\n"),
+            std::string::npos)
+      << g;
+  EXPECT_NE(g.find("set xtics (30, 100, 1000)\n"), std::string::npos) << g;
+  // A panel without margins keeps gnuplot's ranges.
+  plots::Panel plain;
+  plain.curves.push_back({"", plots::Curve::Style::Points, {{1, 2, 0, 0}}, 0});
+  const std::string p = plots::script("", "", {plain}, 1, 1, "p.png", 100, 100);
+  EXPECT_EQ(p.find("set autoscale fix"), std::string::npos) << p;
+  EXPECT_EQ(p.find("set xtics ("), std::string::npos) << p;
 }
 
 TEST(Phase4d, NoPictureFromOnePoint) {

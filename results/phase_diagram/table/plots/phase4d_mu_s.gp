@@ -28,8 +28,10 @@ set key outside bottom center
 set title "critical mu_s against xi"
 set xlabel "xi"
 set ylabel "mu_s_c (bars: 95 % bootstrap interval)"
+set xtics (10, 30, 100)
 set logscale x
-set offsets graph 0.05, graph 0.05, 0, 0
+set autoscale fix
+set offsets graph 0.05, graph 0.05, graph 0.05, graph 0.05
 plot $d0_0 using 1:2:3:4 with yerrorlines pointtype 7 pointsize 0.8 title "eps = 100, rho = 20 (results/phase_diagram/runs/coarse)", \
      $d0_1 using ($1*10**(-0.02)):2:3:4 with yerrorlines pointtype 7 pointsize 0.8 title "eps = 1000, rho = 20 (results/paper/fig5b/sweep)", \
      $d0_2 using 1:2:3:4 with yerrorlines pointtype 7 pointsize 0.8 title "eps = 1000, rho = 20 (results/phase_diagram/runs/coarse)", \
